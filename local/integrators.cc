@@ -1,0 +1,170 @@
+#include "integrators.h"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <vector>
+
+#include "error.h"
+
+namespace pumpd::local
+{
+  void check_finite(const PdModel &model, const State &s)
+  {
+    double sum = 0.;
+    for (std::size_t i : model.nodes())
+      sum += s.ux[i] * s.ux[i] + s.uy[i] * s.uy[i] + s.fx[i] * s.fx[i] + s.fy[i] * s.fy[i];
+    if (!std::isfinite(sum))
+      {
+        std::ostringstream m;
+        m << "non-finite displacement or force in the PD state at step " << s.step << " (time "
+          << s.time << " s)";
+        throw NonFiniteState(m.str());
+      }
+  }
+
+  VelocityVerlet::VelocityVerlet(const PdModel &m, double time_step)
+    : model(m)
+    , dt(time_step)
+  {
+    const double bound = model.stable_time_step();
+    if (!(dt > 0.) || dt > bound)
+      {
+        std::ostringstream allowed;
+        allowed << "must be in (0, " << bound
+                << "] s, the Silling-Askari bound sqrt(2 rho / sum_j c_ij / |xi_ij|) of this lattice";
+        std::ostringstream value;
+        value << dt << " s";
+        throw InvalidParameter("PD time step", value.str(), allowed.str());
+      }
+  }
+
+  void VelocityVerlet::initialise(State &s) const
+  {
+    model.compute_forces(s);
+    check_finite(model, s);
+  }
+
+  void VelocityVerlet::step(State &s, const BoundaryLayer &layer, double ramp_end) const
+  {
+    const auto  &free = model.free_mask();
+    const auto  &bl   = model.boundary_layer();
+    const double k    = 0.5 * dt / model.material().parameters().density;
+
+    std::vector<double> fx0(bl.size()), fy0(bl.size()), ux0(bl.size()), uy0(bl.size());
+    for (std::size_t n = 0; n < bl.size(); ++n)
+      {
+        fx0[n] = s.fx[bl[n]];
+        fy0[n] = s.fy[bl[n]];
+        ux0[n] = s.ux[bl[n]];
+        uy0[n] = s.uy[bl[n]];
+      }
+
+    const std::size_t n = s.ux.size();
+    for (std::size_t i = 0; i < n; ++i)
+      {
+        s.vx[i] = free[i] * (s.vx[i] + k * s.fx[i]);
+        s.vy[i] = free[i] * (s.vy[i] + k * s.fy[i]);
+        s.ux[i] += dt * s.vx[i];
+        s.uy[i] += dt * s.vy[i];
+      }
+    layer.apply(s, ramp_end);
+    model.compute_forces(s);
+    for (std::size_t i = 0; i < n; ++i)
+      {
+        s.vx[i] = free[i] * (s.vx[i] + k * s.fx[i]);
+        s.vy[i] = free[i] * (s.vy[i] + k * s.fy[i]);
+      }
+
+    // Work of the layer: the force it applies is minus the bond force on its nodes.
+    double work = 0.;
+    for (std::size_t m = 0; m < bl.size(); ++m)
+      work -= 0.5 * ((fx0[m] + s.fx[bl[m]]) * (s.ux[bl[m]] - ux0[m]) +
+                     (fy0[m] + s.fy[bl[m]]) * (s.uy[bl[m]] - uy0[m]));
+    s.external_work += model.node_volume() * work;
+    s.time += dt;
+    ++s.step;
+    check_finite(model, s);
+  }
+
+  DynamicRelaxation::DynamicRelaxation(const PdModel &m, double tolerance, std::size_t max_iterations)
+    : model(m)
+    , tol(tolerance)
+    , max_it(max_iterations)
+  {
+    require_range("Relaxation tolerance", tol, 1e-14, 0.5, "must be in [1e-14, 0.5]");
+    if (max_it < 1)
+      throw InvalidParameter("Relaxation iterations", "0", "must be >= 1");
+  }
+
+  // Kilic & Madenci (2010): fictitious density Lambda from the stiffness row sums (time step 1),
+  // adaptive damping c = 2 sqrt(u.K1 u / u.u) from the local diagonal stiffness
+  // K1_ii = -(f_i^n - f_i^{n-1}) / (Lambda v_i^{n-1/2}).
+  RelaxationResult DynamicRelaxation::solve(State &s) const
+  {
+    const auto       &nodes  = model.nodes();
+    const auto       &free   = model.free_mask();
+    const double      lambda = model.stiffness_scale();
+    const std::size_t n      = s.ux.size();
+    std::vector<double> fx_old(n, 0.), fy_old(n, 0.);
+
+    RelaxationResult result;
+    model.compute_forces(s);
+    check_finite(model, s);
+    double damping = 0.;
+    for (std::size_t it = 0; it < max_it; ++it)
+      {
+        double f2 = 0., u2 = 0.;
+        for (std::size_t i : nodes)
+          {
+            f2 += free[i] * (s.fx[i] * s.fx[i] + s.fy[i] * s.fy[i]);
+            u2 += s.ux[i] * s.ux[i] + s.uy[i] * s.uy[i];
+          }
+        result.iterations = it;
+        result.residual   = std::sqrt(f2) / (lambda * std::sqrt(u2) + 1e-300);
+        if (result.residual < tol || f2 == 0.)
+          {
+            result.converged = true;
+            break;
+          }
+        for (std::size_t i : nodes)
+          {
+            if (it == 0) // v^{1/2} = F^0 / (2 Lambda)
+              {
+                s.vx[i] = free[i] * s.fx[i] / (2. * lambda);
+                s.vy[i] = free[i] * s.fy[i] / (2. * lambda);
+              }
+            else
+              {
+                s.vx[i] = free[i] * ((2. - damping) * s.vx[i] + 2. * s.fx[i] / lambda) / (2. + damping);
+                s.vy[i] = free[i] * ((2. - damping) * s.vy[i] + 2. * s.fy[i] / lambda) / (2. + damping);
+              }
+            s.ux[i] += s.vx[i];
+            s.uy[i] += s.vy[i];
+            fx_old[i] = s.fx[i];
+            fy_old[i] = s.fy[i];
+          }
+        model.compute_forces(s);
+        check_finite(model, s);
+        double num = 0., den = 0.;
+        for (std::size_t i : nodes)
+          {
+            if (free[i] == 0.)
+              continue;
+            const auto local = [&](double f, double f0, double v, double u) {
+              if (v == 0.)
+                return;
+              const double k1 = -(f - f0) / (lambda * v);
+              num += u * k1 * u;
+              den += u * u;
+            };
+            local(s.fx[i], fx_old[i], s.vx[i], s.ux[i]);
+            local(s.fy[i], fy_old[i], s.vy[i], s.uy[i]);
+          }
+        damping = (den > 0. && num > 0.) ? std::min(1.9, 2. * std::sqrt(num / den)) : 0.;
+      }
+    std::fill(s.vx.begin(), s.vx.end(), 0.);
+    std::fill(s.vy.begin(), s.vy.end(), 0.);
+    return result;
+  }
+} // namespace pumpd::local

@@ -1,0 +1,59 @@
+// Time integration of rho u'' = f(u): velocity Verlet for dynamics, adaptive dynamic relaxation
+// (Kilic & Madenci 2010) for quasi-static states. The boundary layer is prescribed, every other
+// material node moves. Both check the state after each force evaluation and throw
+// NonFiniteState on a NaN or infinity.
+#pragma once
+
+#include <cstddef>
+
+#include "boundary_layer.h"
+#include "model.h"
+
+namespace pumpd::local
+{
+  class VelocityVerlet
+  {
+  public:
+    /// Throws InvalidParameter if dt <= 0 or dt exceeds the Silling-Askari bound (named in the
+    /// message with its value).
+    VelocityVerlet(const PdModel &model, double time_step);
+
+    double time_step() const { return dt; }
+    /// Forces at the current state; call once before the first step (and after a restart
+    /// only if the checkpoint did not carry them).
+    void initialise(State &s) const;
+    /// Advances one step; the layer moves to its value at ramp_end, and the work it does on the
+    /// body (trapezoidal rule on its reaction force) is added to s.external_work.
+    void step(State &s, const BoundaryLayer &layer, double ramp_end) const;
+
+  private:
+    const PdModel &model;
+    double         dt;
+  };
+
+  struct RelaxationResult
+  {
+    std::size_t iterations = 0;
+    double      residual   = 0.; ///< |f_free| / (stiffness scale |u|)
+    bool        converged  = false;
+  };
+
+  class DynamicRelaxation
+  {
+  public:
+    /// tolerance in (0, 1), max_iterations >= 1.
+    DynamicRelaxation(const PdModel &model, double tolerance, std::size_t max_iterations);
+
+    /// Relaxes the free nodes to equilibrium with the layer as it is in s. Velocities are
+    /// fictitious and left at zero on return.
+    RelaxationResult solve(State &s) const;
+
+  private:
+    const PdModel &model;
+    double         tol;
+    std::size_t    max_it;
+  };
+
+  /// Throws NonFiniteState naming the step if a displacement or force of s is not finite.
+  void check_finite(const PdModel &model, const State &s);
+} // namespace pumpd::local

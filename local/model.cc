@@ -1,0 +1,322 @@
+#include "model.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <sstream>
+
+#include "error.h"
+#include "fast_exp.h"
+
+namespace pumpd::local
+{
+  namespace
+  {
+    std::string box_text(const geometry::Box &b)
+    {
+      std::ostringstream s;
+      s << "[" << b.x_min << ", " << b.x_max << "] x [" << b.y_min << ", " << b.y_max << "]";
+      return s.str();
+    }
+
+    void validate(const Region &r)
+    {
+      const geometry::Box &o = r.body.outline;
+      if (!(o.width() > 0. && o.height() > 0.))
+        throw InvalidParameter("Body outline", box_text(o), "must have positive width and height");
+      if (!o.contains(r.box, 1e-9 * std::max(o.width(), o.height())))
+        throw InvalidParameter("PD box", box_text(r.box),
+                               "must lie inside the body " + box_text(o));
+      for (const auto &crack : r.cracks)
+        {
+          if (crack.size() < 2)
+            throw InvalidParameter("Crack", std::to_string(crack.size()) + " vertices",
+                                   "a crack polyline needs at least 2 vertices");
+          for (const auto &p : crack)
+            if (!o.contains(p, 1e-9 * std::max(o.width(), o.height())))
+              throw InvalidParameter("Crack vertex",
+                                     "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")",
+                                     "must lie inside the body " + box_text(o));
+        }
+    }
+
+    /// Box edges inside the body (not on its outline): 0 left, 1 right, 2 bottom, 3 top.
+    std::array<bool, 4> interior_edges(const geometry::Box &box, const geometry::Box &outline, double tol)
+    {
+      return {box.x_min > outline.x_min + tol, box.x_max < outline.x_max - tol,
+              box.y_min > outline.y_min + tol, box.y_max < outline.y_max - tol};
+    }
+  } // namespace
+
+  PdModel::PdModel(const MaterialParameters &material, double horizon, int horizon_ratio,
+                   const Region &region)
+    : mat(material, horizon)
+    , grid(region.box, horizon / horizon_ratio, horizon_ratio)
+    , st(make_half_stencil(horizon_ratio, mat))
+    , reg(region)
+  {
+    validate(reg);
+    const double h = grid.spacing();
+    volume         = h * h;
+
+    stiffness = 0.;
+    for (std::size_t k = 0; k < st.size(); ++k)
+      {
+        const double q = st.weight[k] * h * h;
+        force_coeff.push_back(4. * mat.C() * mat.beta() * q * mat.normalisation());
+        energy_coeff.push_back(mat.C() * q * mat.normalisation());
+        stiffness += 2. * force_coeff.back() / (st.length[k] * h); // both halves of the stencil
+      }
+
+    const std::size_t n = grid.storage_size();
+    plane_words         = (n + 63) / 64;
+    exists.assign(st.size() * plane_words, 0);
+    precrack.assign(st.size() * plane_words, 0);
+    free.assign(n, 0.);
+
+    std::vector<char> material_at(n, 0);
+    for (std::size_t i = 0; i < n; ++i)
+      if (grid.is_real(i) && reg.body.contains(grid.position(i)))
+        {
+          material_at[i] = 1;
+          active_nodes.push_back(i);
+        }
+
+    // Boundary layer: nodes closer than one horizon to a box edge inside the body.
+    const auto &box  = reg.box;
+    const auto  edge = interior_edges(box, reg.body.outline, 0.25 * h);
+    for (std::size_t i : active_nodes)
+      {
+        const auto p        = grid.position(i);
+        const bool in_layer = (edge[0] && p.x - box.x_min < horizon) ||
+                              (edge[1] && box.x_max - p.x < horizon) ||
+                              (edge[2] && p.y - box.y_min < horizon) ||
+                              (edge[3] && box.y_max - p.y < horizon);
+        if (in_layer)
+          layer_nodes.push_back(i);
+        else
+          free[i] = 1.;
+      }
+
+    // Bonds: exist between material nodes unless the segment passes through a hole.
+    for (std::size_t k = 0; k < st.size(); ++k)
+      {
+        const std::ptrdiff_t off = st.dx[k] + std::ptrdiff_t(grid.stride()) * st.dy[k];
+        for (std::size_t i : active_nodes)
+          {
+            const std::size_t j = i + off;
+            if (!material_at[j])
+              continue;
+            const auto a = grid.position(i), b = grid.position(j);
+            if (std::any_of(reg.body.holes.begin(), reg.body.holes.end(),
+                            [&](const geometry::Circle &c) { return geometry::segment_meets_disk(a, b, c); }))
+              continue;
+            const std::size_t w = k * plane_words + i / 64;
+            exists[w] |= std::uint64_t(1) << (i % 64);
+            if (std::any_of(reg.cracks.begin(), reg.cracks.end(), [&](const geometry::Polyline &c) {
+                  return geometry::segment_crosses_polyline(a, b, c);
+                }))
+              precrack[w] |= std::uint64_t(1) << (i % 64);
+          }
+      }
+  }
+
+  State PdModel::initial_state() const
+  {
+    const std::size_t n = grid.storage_size();
+    State             s;
+    s.ux.assign(n, 0.);
+    s.uy.assign(n, 0.);
+    s.vx.assign(n, 0.);
+    s.vy.assign(n, 0.);
+    s.fx.assign(n, 0.);
+    s.fy.assign(n, 0.);
+    s.broken.resize(exists.size());
+    for (std::size_t w = 0; w < exists.size(); ++w)
+      s.broken[w] = ~exists[w] | precrack[w];
+    return s;
+  }
+
+  // The hot loop. For one row and one stencil offset, 64 consecutive nodes i and their partners
+  // j = i + off are contiguous, so the bond stretch, failure test and force vectorise; the
+  // forces go to a small buffer first and are then added to i and subtracted from j (Newton 3).
+  void PdModel::forces_in_rows(State &s, std::size_t row_begin, std::size_t row_end,
+                               double &dissipated) const
+  {
+    const double  h       = grid.spacing();
+    const double  x_break = 0.5 * mat.parameters().break_factor * mat.parameters().break_factor;
+    const double *ux = s.ux.data(), *uy = s.uy.data();
+    double       *fx = s.fx.data(), *fy = s.fy.data();
+    const std::size_t first_word = grid.reach() / 64, last_word = (grid.reach() + grid.nx() + 63) / 64;
+
+    alignas(64) double gx[64], gy[64];
+    for (std::size_t iy = row_begin; iy < row_end; ++iy)
+      for (std::size_t k = 0; k < st.size(); ++k)
+        {
+          const std::ptrdiff_t off = st.dx[k] + std::ptrdiff_t(grid.stride()) * st.dy[k];
+          const double ex = st.ex[k], ey = st.ey[k], inv_r = 1. / (st.length[k] * h);
+          const double beta_r = mat.beta() * st.length[k] * h, a = force_coeff[k];
+          std::uint64_t *bits = s.broken.data() + k * plane_words + iy * grid.stride() / 64;
+          for (std::size_t w = first_word; w < last_word; ++w)
+            {
+              const std::size_t   i0    = iy * grid.stride() + 64 * w;
+              const std::uint64_t dead  = bits[w];
+              std::uint64_t       fresh = 0;
+#pragma omp simd reduction(| : fresh) aligned(gx, gy : 64)
+              for (int l = 0; l < 64; ++l)
+                {
+                  const std::size_t i = i0 + l, j = i0 + l + off;
+                  const double S = ((ux[j] - ux[i]) * ex + (uy[j] - uy[i]) * ey) * inv_r;
+                  const double x = beta_r * S * S;
+                  const bool   gone  = (dead >> l) & 1u;
+                  const bool   fails = x > x_break;
+                  fresh |= std::uint64_t(fails & !gone) << l;
+                  const double F = (gone | fails) ? 0. : a * S * exp_negative(x);
+                  gx[l] = F * ex;
+                  gy[l] = F * ey;
+                }
+#pragma omp simd
+              for (int l = 0; l < 64; ++l)
+                {
+                  fx[i0 + l] += gx[l];
+                  fy[i0 + l] += gy[l];
+                }
+#pragma omp simd
+              for (int l = 0; l < 64; ++l)
+                {
+                  fx[i0 + l + off] -= gx[l];
+                  fy[i0 + l + off] -= gy[l];
+                }
+              if (fresh)
+                {
+                  bits[w] |= fresh;
+                  // Rare path: the energy the failing bonds held is dissipated.
+                  for (int l = 0; l < 64; ++l)
+                    if ((fresh >> l) & 1u)
+                      {
+                        const std::size_t i = i0 + l, j = i + off;
+                        const double S = ((ux[j] - ux[i]) * ex + (uy[j] - uy[i]) * ey) * inv_r;
+                        dissipated += 2. * volume * energy_coeff[k] *
+                                      (1. - exp_negative(beta_r * S * S));
+                      }
+                }
+            }
+        }
+  }
+
+  void PdModel::compute_forces(State &s) const
+  {
+    std::fill(s.fx.begin(), s.fx.end(), 0.);
+    std::fill(s.fy.begin(), s.fy.end(), 0.);
+    // Row blocks at least m rows high: block b adds into its own rows and the first m rows of
+    // block b + 1 only, so all even blocks can run at once, then all odd blocks.
+    const std::size_t ny     = grid.ny();
+    const std::size_t height = std::max<std::size_t>(grid.reach(), (ny + 15) / 16);
+    const std::size_t blocks = (ny + height - 1) / height;
+    std::vector<double> dissipated(blocks, 0.);
+    for (std::size_t parity = 0; parity < 2; ++parity)
+      {
+#pragma omp parallel for schedule(static)
+        for (std::size_t b = parity; b < blocks; b += 2)
+          forces_in_rows(s, b * height, std::min(ny, (b + 1) * height), dissipated[b]);
+      }
+    for (double d : dissipated)
+      s.dissipated += d;
+  }
+
+  double PdModel::stable_time_step() const
+  {
+    return std::sqrt(2. * mat.parameters().density / stiffness);
+  }
+
+  template <class BondVisitor>
+  void PdModel::for_each_existing_bond(BondVisitor &&visit) const
+  {
+    for (std::size_t k = 0; k < st.size(); ++k)
+      {
+        const std::ptrdiff_t off = st.dx[k] + std::ptrdiff_t(grid.stride()) * st.dy[k];
+        for (std::size_t i : active_nodes)
+          if (bond_exists(k, i))
+            visit(k, i, i + off);
+      }
+  }
+
+  double PdModel::elastic_energy(const State &s) const
+  {
+    const double h = grid.spacing();
+    double       e = 0.;
+    for_each_existing_bond([&](std::size_t k, std::size_t i, std::size_t j) {
+      if (bit(s.broken, k * plane_words, i))
+        return;
+      const double S = ((s.ux[j] - s.ux[i]) * st.ex[k] + (s.uy[j] - s.uy[i]) * st.ey[k]) /
+                       (st.length[k] * h);
+      e += 2. * volume * energy_coeff[k] * (1. - std::exp(-mat.beta() * st.length[k] * h * S * S));
+    });
+    return e;
+  }
+
+  double PdModel::kinetic_energy(const State &s) const
+  {
+    double e = 0.;
+    for (std::size_t i : active_nodes)
+      e += free[i] * (s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i]);
+    return 0.5 * mat.parameters().density * volume * e;
+  }
+
+  std::vector<double> PdModel::damage(const State &s) const
+  {
+    std::vector<double> lost(grid.storage_size(), 0.), all(grid.storage_size(), 0.);
+    for_each_existing_bond([&](std::size_t k, std::size_t i, std::size_t j) {
+      const double w = st.weight[k];
+      all[i] += w;
+      all[j] += w;
+      if (bit(s.broken, k * plane_words, i))
+        {
+          lost[i] += w;
+          lost[j] += w;
+        }
+    });
+    for (std::size_t i = 0; i < lost.size(); ++i)
+      lost[i] = all[i] > 0. ? lost[i] / all[i] : 0.;
+    return lost;
+  }
+
+  std::vector<double> PdModel::stretch_ratio(const State &s) const
+  {
+    const double        h = grid.spacing();
+    std::vector<double> z(grid.storage_size(), 0.);
+    for_each_existing_bond([&](std::size_t k, std::size_t i, std::size_t j) {
+      const double r = st.length[k] * h;
+      const double S = ((s.ux[j] - s.ux[i]) * st.ex[k] + (s.uy[j] - s.uy[i]) * st.ey[k]) / r;
+      const double ratio = std::abs(S) / mat.inflection_stretch(r);
+      z[i] = std::max(z[i], ratio);
+      z[j] = std::max(z[j], ratio);
+    });
+    return z;
+  }
+
+  std::vector<double> PdModel::energy_density(const State &s) const
+  {
+    const double        h = grid.spacing();
+    std::vector<double> w(grid.storage_size(), 0.);
+    for_each_existing_bond([&](std::size_t k, std::size_t i, std::size_t j) {
+      if (bit(s.broken, k * plane_words, i))
+        return;
+      const double r = st.length[k] * h;
+      const double S = ((s.ux[j] - s.ux[i]) * st.ex[k] + (s.uy[j] - s.uy[i]) * st.ey[k]) / r;
+      const double g = energy_coeff[k] * (1. - std::exp(-mat.beta() * r * S * S));
+      w[i] += g;
+      w[j] += g;
+    });
+    return w;
+  }
+
+  std::size_t PdModel::intact_bonds(const State &s) const
+  {
+    std::size_t n = 0;
+    for_each_existing_bond([&](std::size_t k, std::size_t i, std::size_t) {
+      n += !bit(s.broken, k * plane_words, i);
+    });
+    return n;
+  }
+} // namespace pumpd::local

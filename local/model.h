@@ -1,0 +1,114 @@
+// The PD body in a box: lattice, bonds, the force kernel and the derived fields.
+//
+// A node exists where the lattice meets the body (outside holes); a bond exists where its segment
+// stays clear of every hole; a bond across a pre-existing crack polyline starts broken. Nodes
+// within one horizon of a box edge that lies inside the body form the boundary layer and take
+// prescribed displacements (BoundaryLayer); edges on the body outline are free surfaces.
+//
+// Units: force densities f [N/m^3], energy densities [J/m^3], energies per unit thickness [J/m].
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "geometry.h"
+#include "lattice.h"
+#include "material.h"
+
+namespace pumpd::local
+{
+  /// Where the PD box sits: the body it cuts out of, the box, and the cracks already there.
+  struct Region
+  {
+    geometry::Body                  body;
+    geometry::Box                   box;
+    std::vector<geometry::Polyline> cracks;
+  };
+
+  /// Everything that changes in a run. Arrays use the lattice's storage index.
+  struct State
+  {
+    std::vector<double>        ux, uy, vx, vy, fx, fy;
+    std::vector<std::uint64_t> broken; ///< bit (k, i): bond from node i along offset k is gone
+    double                     time          = 0.;
+    std::uint64_t              step          = 0;
+    double                     dissipated    = 0.; ///< energy of failed bonds [J/m]
+    double                     external_work = 0.; ///< work of the boundary layer on the body [J/m]
+  };
+
+  class PdModel
+  {
+  public:
+    /// horizon_ratio m = delta / h. Throws InvalidParameter (h <= 0, m < 2, box not inside the
+    /// body, crack polyline outside the body) with the parameter's name and allowed range.
+    PdModel(const MaterialParameters &material, double horizon, int horizon_ratio,
+            const Region &region);
+
+    const LiptonMaterial &material() const { return mat; }
+    const Lattice        &lattice() const { return grid; }
+    const Stencil        &stencil() const { return st; }
+    const Region         &region() const { return reg; }
+    double                node_volume() const { return volume; }
+
+    /// Nodes that carry material, in storage order.
+    const std::vector<std::size_t> &nodes() const { return active_nodes; }
+    /// Nodes of the boundary layer (a subset of nodes()).
+    const std::vector<std::size_t> &boundary_layer() const { return layer_nodes; }
+    /// 1 for nodes that move under the equation of motion, 0 elsewhere (ghosts, holes, layer).
+    const std::vector<double> &free_mask() const { return free; }
+
+    /// Zero displacement and velocity, bonds broken where they do not exist or cross a crack.
+    State initial_state() const;
+
+    /// Bond forces into s.fx, s.fy (force densities); bonds beyond the break stretch fail and
+    /// their energy moves to s.dissipated. Two threads split the rows deterministically: the
+    /// result does not depend on the thread count.
+    void compute_forces(State &s) const;
+
+    /// Silling-Askari bound sqrt(2 rho / sum_j c_ij / |xi_ij|) on the Verlet time step.
+    double stable_time_step() const;
+    /// Sum over the full stencil of the bond stiffness a_k / |xi_k| [N/m^4]: the diagonal scale
+    /// used by the stability bound and by dynamic relaxation.
+    double stiffness_scale() const { return stiffness; }
+
+    double elastic_energy(const State &s) const;
+    double kinetic_energy(const State &s) const;
+    /// Per node: weighted fraction of the node's existing bonds that are broken.
+    std::vector<double> damage(const State &s) const;
+    /// Per node: Z = max over its existing bonds of |S| / S_c(|xi|).
+    std::vector<double> stretch_ratio(const State &s) const;
+    /// Per node: elastic energy density W(x).
+    std::vector<double> energy_density(const State &s) const;
+    /// Count of bonds of the half stencil between existing nodes that are not broken.
+    std::size_t intact_bonds(const State &s) const;
+
+    std::size_t bit_plane_words() const { return plane_words; }
+    bool        bond_exists(std::size_t k, std::size_t i) const
+    {
+      return (exists[k * plane_words + i / 64] >> (i % 64)) & 1u;
+    }
+    static bool bit(const std::vector<std::uint64_t> &bits, std::size_t word, std::size_t i)
+    {
+      return (bits[word + i / 64] >> (i % 64)) & 1u;
+    }
+
+  private:
+    void forces_in_rows(State &s, std::size_t row_begin, std::size_t row_end, double &dissipated) const;
+    template <class BondVisitor>
+    void for_each_existing_bond(BondVisitor &&visit) const;
+
+    LiptonMaterial             mat;
+    Lattice                    grid;
+    Stencil                    st;
+    Region                     reg;
+    double                     volume;
+    std::vector<double>        force_coeff;  ///< a_k = 4 C beta q_k / (pi delta^3), q_k = h^2 weight_k
+    std::vector<double>        energy_coeff; ///< C q_k / (pi delta^3): W contribution per unit g/C
+    double                     stiffness;
+    std::size_t                plane_words;
+    std::vector<std::uint64_t> exists;   ///< static bond existence bits, layout of State::broken
+    std::vector<std::uint64_t> precrack; ///< bonds cut by the initial cracks
+    std::vector<std::size_t>   active_nodes, layer_nodes;
+    std::vector<double>        free;
+  };
+} // namespace pumpd::local
