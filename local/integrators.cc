@@ -24,10 +24,10 @@ namespace pumpd::local
   }
 
   VelocityVerlet::VelocityVerlet(const PdModel &m, double time_step)
-    : model(m)
+    : pd(m)
     , dt(time_step)
   {
-    const double bound = model.stable_time_step();
+    const double bound = pd.stable_time_step();
     if (!(dt > 0.) || dt > bound)
       {
         std::ostringstream allowed;
@@ -41,15 +41,15 @@ namespace pumpd::local
 
   void VelocityVerlet::initialise(State &s) const
   {
-    model.compute_forces(s);
-    check_finite(model, s);
+    pd.compute_forces(s);
+    check_finite(pd, s);
   }
 
   void VelocityVerlet::step(State &s, const BoundaryLayer &layer, double ramp_end) const
   {
-    const auto  &free = model.free_mask();
-    const auto  &bl   = model.boundary_layer();
-    const double k    = 0.5 * dt / model.material().parameters().density;
+    const auto  &free = pd.free_mask();
+    const auto  &bl   = pd.boundary_layer();
+    const double k    = 0.5 * dt / pd.material().parameters().density;
 
     std::vector<double> fx0(bl.size()), fy0(bl.size()), ux0(bl.size()), uy0(bl.size());
     for (std::size_t n = 0; n < bl.size(); ++n)
@@ -69,7 +69,7 @@ namespace pumpd::local
         s.uy[i] += dt * s.vy[i];
       }
     layer.apply(s, ramp_end);
-    model.compute_forces(s);
+    pd.compute_forces(s);
     for (std::size_t i = 0; i < n; ++i)
       {
         s.vx[i] = free[i] * (s.vx[i] + k * s.fx[i]);
@@ -81,10 +81,10 @@ namespace pumpd::local
     for (std::size_t m = 0; m < bl.size(); ++m)
       work -= 0.5 * ((fx0[m] + s.fx[bl[m]]) * (s.ux[bl[m]] - ux0[m]) +
                      (fy0[m] + s.fy[bl[m]]) * (s.uy[bl[m]] - uy0[m]));
-    s.external_work += model.node_volume() * work;
+    s.external_work += pd.node_volume() * work;
     s.time += dt;
     ++s.step;
-    check_finite(model, s);
+    check_finite(pd, s);
   }
 
   DynamicRelaxation::DynamicRelaxation(const PdModel &m, double tolerance, std::size_t max_iterations)

@@ -19,6 +19,7 @@ namespace pumpd::local
     VelocityVerlet(const PdModel &model, double time_step);
 
     double time_step() const { return dt; }
+    const PdModel &model() const { return pd; }
     /// Forces at the current state; call once before the first step (and after a restart
     /// only if the checkpoint did not carry them).
     void initialise(State &s) const;
@@ -27,7 +28,7 @@ namespace pumpd::local
     void step(State &s, const BoundaryLayer &layer, double ramp_end) const;
 
   private:
-    const PdModel &model;
+    const PdModel &pd;
     double         dt;
   };
 

@@ -1,0 +1,33 @@
+# pumpd: the two commands of the README.
+#   make run  [SCENE=prm/<file>.prm]   install what is missing, configure, build, run the main job
+#   make test                          install what is missing, configure, build, ctest (no bench/study)
+# Also: make bench, make study (the long labels), make clean.
+BUILD ?= build
+SCENE ?= prm/pd-edge-crack.prm
+JOBS  ?= 2
+
+.PHONY: run test bench study deps configure build clean
+
+deps:
+	@scripts/install-deps.sh
+
+configure: deps
+	@test -f $(BUILD)/CMakeCache.txt || cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release
+
+build: configure
+	cmake --build $(BUILD) -j$(JOBS)
+
+run: build
+	$(BUILD)/coupling/pumpd $(SCENE)
+
+test: build
+	cd $(BUILD) && ctest -LE "bench|study" --output-on-failure
+
+bench: build
+	cd $(BUILD) && ctest -L bench --output-on-failure
+
+study: build
+	cd $(BUILD) && ctest -L study --output-on-failure
+
+clean:
+	rm -rf $(BUILD)
