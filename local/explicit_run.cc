@@ -8,6 +8,8 @@ namespace pumpd::local
   void run_explicit(const VelocityVerlet &integrator, State &s, const BoundaryLayer &layer,
                     const ExplicitRun &run)
   {
+    if (run.keep_every < 1)
+      throw InvalidParameter("keep_every", "0", "must be >= 1 (steps between copies of the good state)");
     State good = s;
     for (std::size_t n = 1; n <= run.steps; ++n)
       {

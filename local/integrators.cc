@@ -13,11 +13,12 @@ namespace pumpd::local
   {
     double sum = 0.;
     for (std::size_t i : model.nodes())
-      sum += s.ux[i] * s.ux[i] + s.uy[i] * s.uy[i] + s.fx[i] * s.fx[i] + s.fy[i] * s.fy[i];
+      sum += s.ux[i] * s.ux[i] + s.uy[i] * s.uy[i] + s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i] +
+             s.fx[i] * s.fx[i] + s.fy[i] * s.fy[i];
     if (!std::isfinite(sum))
       {
         std::ostringstream m;
-        m << "non-finite displacement or force in the PD state at step " << s.step << " (time "
+        m << "non-finite displacement, velocity or force in the PD state at step " << s.step << " (time "
           << s.time << " s)";
         throw NonFiniteState(m.str());
       }

@@ -42,7 +42,7 @@ namespace pumpd::local
   class DynamicRelaxation
   {
   public:
-    /// tolerance in (0, 1), max_iterations >= 1.
+    /// tolerance in [1e-14, 0.5], max_iterations >= 1.
     DynamicRelaxation(const PdModel &model, double tolerance, std::size_t max_iterations);
 
     /// Relaxes the free nodes to equilibrium with the layer as it is in s. Velocities are

@@ -75,6 +75,11 @@ namespace pumpd::local
     if (m < 2)
       throw InvalidParameter("Horizon over spacing (m)", std::to_string(m),
                              "must be an integer >= 2 (the horizon spans at least two spacings)");
+    if (!(b.width() > 0. && b.height() > 0. && std::isfinite(b.width()) && std::isfinite(b.height())))
+      throw InvalidParameter("PD box",
+                             "[" + std::to_string(b.x_min) + ", " + std::to_string(b.x_max) + "] x [" +
+                               std::to_string(b.y_min) + ", " + std::to_string(b.y_max) + "]",
+                             "needs x_min < x_max and y_min < y_max");
     const auto count = [&](double length) { return std::size_t(std::floor(length / h + 1e-9)); };
     n_x = count(b.width());
     n_y = count(b.height());

@@ -46,12 +46,21 @@ namespace pumpd::local
       return {box.x_min > outline.x_min + tol, box.x_max < outline.x_max - tol,
               box.y_min > outline.y_min + tol, box.y_max < outline.y_max - tol};
     }
+
+    /// h = delta / m, with m checked first so that m <= 0 is reported as m, not as h.
+    double spacing_for(double horizon, int m)
+    {
+      if (m < 2)
+        throw InvalidParameter("Horizon over spacing (m)", std::to_string(m),
+                               "must be an integer >= 2 (the horizon spans at least two spacings)");
+      return horizon / m;
+    }
   } // namespace
 
   PdModel::PdModel(const MaterialParameters &material, double horizon, int horizon_ratio,
                    const Region &region)
     : mat(material, horizon)
-    , grid(region.box, horizon / horizon_ratio, horizon_ratio)
+    , grid(region.box, spacing_for(horizon, horizon_ratio), horizon_ratio)
     , st(make_half_stencil(horizon_ratio, mat))
     , reg(region)
   {
