@@ -172,14 +172,14 @@ namespace pumpd::local
               const std::uint64_t dead  = bits[w];
               std::uint64_t       fresh = 0;
 #pragma omp simd reduction(| : fresh) aligned(gx, gy : 64)
-              for (int l = 0; l < 64; ++l)
+              for (std::uint64_t l = 0; l < 64; ++l) // 64-bit lanes and masks: vectorises
                 {
-                  const std::size_t i = i0 + l, j = i0 + l + off;
-                  const double S = ((ux[j] - ux[i]) * ex + (uy[j] - uy[i]) * ey) * inv_r;
-                  const double x = beta_r * S * S;
-                  const bool   gone  = (dead >> l) & 1u;
-                  const bool   fails = x > x_break;
-                  fresh |= std::uint64_t(fails & !gone) << l;
+                  const std::size_t   i = i0 + l, j = i0 + l + off;
+                  const double        S = ((ux[j] - ux[i]) * ex + (uy[j] - uy[i]) * ey) * inv_r;
+                  const double        x = beta_r * S * S;
+                  const std::uint64_t gone  = (dead >> l) & 1u;
+                  const std::uint64_t fails = x > x_break ? 1u : 0u;
+                  fresh |= (fails & ~gone) << l;
                   const double F = (gone | fails) ? 0. : a * S * exp_negative(x);
                   gx[l] = F * ex;
                   gy[l] = F * ey;
@@ -215,20 +215,29 @@ namespace pumpd::local
 
   void PdModel::compute_forces(State &s) const
   {
-    std::fill(s.fx.begin(), s.fx.end(), 0.);
-    std::fill(s.fy.begin(), s.fy.end(), 0.);
-    // Row blocks at least m rows high: block b adds into its own rows and the first m rows of
-    // block b + 1 only, so all even blocks can run at once, then all odd blocks.
+    // Row blocks at least m + 1 rows high: block b adds into its own rows and the first m + 1
+    // rows of block b + 1 only (m rows of reach, one more where a ghost lane wraps past the row
+    // end), so all even blocks can run at once, then all odd blocks.
     const std::size_t ny     = grid.ny();
-    const std::size_t height = std::max<std::size_t>(grid.reach(), (ny + 15) / 16);
+    const std::size_t height = std::max<std::size_t>(grid.reach() + 1, (ny + 15) / 16);
     const std::size_t blocks = (ny + height - 1) / height;
+    const std::size_t n      = s.fx.size();
     std::vector<double> dissipated(blocks, 0.);
-    for (std::size_t parity = 0; parity < 2; ++parity)
-      {
-#pragma omp parallel for schedule(static)
-        for (std::size_t b = parity; b < blocks; b += 2)
-          forces_in_rows(s, b * height, std::min(ny, (b + 1) * height), dissipated[b]);
-      }
+#pragma omp parallel
+    {
+#pragma omp for schedule(static)
+      for (std::size_t i = 0; i < n; ++i)
+        {
+          s.fx[i] = 0.;
+          s.fy[i] = 0.;
+        }
+      for (std::size_t parity = 0; parity < 2; ++parity)
+        {
+#pragma omp for schedule(static)
+          for (std::size_t b = parity; b < blocks; b += 2)
+            forces_in_rows(s, b * height, std::min(ny, (b + 1) * height), dissipated[b]);
+        }
+    }
     for (double d : dissipated)
       s.dissipated += d;
   }

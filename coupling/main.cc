@@ -1,0 +1,78 @@
+// pumpd: runs a scene from a deal.II parameter file.
+//   pumpd <scene.prm>          run it
+//   pumpd --print-parameters   every parameter with default, allowed range and documentation
+//   pumpd --help
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/parameter_handler.h>
+
+#include <iostream>
+#include <sstream>
+#include <string>
+
+#include "error.h"
+#include "parameters.h"
+#include "pd_edge_crack.h"
+
+namespace
+{
+  const char *usage = "usage: pumpd <scene.prm> | --print-parameters | --help\n"
+                      "  Runs the scene described by a deal.II ParameterHandler file; see prm/ for examples\n"
+                      "  and --print-parameters for every parameter, its default and its allowed range.\n";
+
+  /// One line: deal.II's multi-line messages folded.
+  std::string one_line(const std::string &text)
+  {
+    std::istringstream in(text);
+    std::string        word, line;
+    while (in >> word)
+      line += (line.empty() ? "" : " ") + word;
+    return line;
+  }
+
+  int run(const std::string &file)
+  {
+    dealii::ParameterHandler prm;
+    pumpd::coupling::declare_parameters(prm);
+    prm.parse_input(file);
+    const auto type = pumpd::coupling::scene_type(prm);
+    if (type == "pd-edge-crack")
+      {
+        const auto r = pumpd::coupling::run_edge_crack(pumpd::coupling::read_edge_crack(prm), std::cout);
+        std::cout << "crack growth onset at K/K_c = " << r.onset_k_over_kc << "; grown crack within "
+                  << r.max_offset / r.spacing << " h of the symmetry line\n";
+      }
+    return 0;
+  }
+} // namespace
+
+int main(int argc, char **argv)
+{
+  const std::string arg = argc > 1 ? argv[1] : "--help";
+  if (arg == "--help" || arg == "-h" || argc > 2)
+    {
+      std::cout << usage;
+      return argc > 2 ? 1 : 0;
+    }
+  if (arg == "--print-parameters")
+    {
+      dealii::ParameterHandler prm;
+      pumpd::coupling::declare_parameters(prm);
+      prm.print_parameters(std::cout, dealii::ParameterHandler::Text);
+      return 0;
+    }
+  try
+    {
+      return run(arg);
+    }
+  catch (const dealii::ExceptionBase &e)
+    {
+      std::ostringstream info;
+      e.print_info(info);
+      std::cerr << "pumpd: error in " << arg << ": " << one_line(info.str()) << "\n";
+    }
+  catch (const std::exception &e)
+    {
+      std::cerr << "pumpd: error in " << arg << ": " << one_line(e.what()) << "\n";
+    }
+  return 1;
+}

@@ -1,0 +1,24 @@
+// The parameters of a pumpd scene file (deal.II ParameterHandler format): declared once, with
+// default, allowed range and documentation, and read into the scenes' parameter structs.
+#pragma once
+
+#include <string>
+
+#include "pd_edge_crack.h"
+
+namespace dealii
+{
+  class ParameterHandler;
+}
+
+namespace pumpd::coupling
+{
+  void declare_parameters(dealii::ParameterHandler &prm);
+
+  /// The value of "Scene/Type".
+  std::string scene_type(dealii::ParameterHandler &prm);
+  /// "Scene/Output directory".
+  std::string output_directory(dealii::ParameterHandler &prm);
+
+  EdgeCrackParameters read_edge_crack(dealii::ParameterHandler &prm);
+} // namespace pumpd::coupling

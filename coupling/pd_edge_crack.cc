@@ -1,0 +1,143 @@
+#include "pd_edge_crack.h"
+
+#include <algorithm>
+#include <chrono>
+#include <memory>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <ostream>
+
+#include "boundary_layer.h"
+#include "checkpoint.h"
+#include "error.h"
+#include "integrators.h"
+#include "lefm.h"
+#include "model.h"
+#include "vtu_output.h"
+
+namespace pumpd::coupling
+{
+  namespace
+  {
+    void validate(const EdgeCrackParameters &p)
+    {
+      require_positive("Box size", p.box_size);
+      require_range("First K over K_c", p.k_start, 1e-6, 1e3, "must be in (0, 1000]");
+      require_range("Last K over K_c", p.k_end, p.k_start, 1e3, "must be >= the first K over K_c");
+      if (p.load_steps < 1)
+        throw InvalidParameter("Load steps", "0", "must be >= 1");
+      require_range("Crack damage threshold", p.crack_damage, 1e-3, 1., "must be in (0, 1]");
+      if (p.box_size < 4. * p.horizon)
+        throw InvalidParameter("Box size", std::to_string(p.box_size),
+                               "must be at least 4 horizons (" + std::to_string(4. * p.horizon) +
+                                 " m): a horizon of boundary layer on each side and room for the tip");
+    }
+  } // namespace
+
+  EdgeCrackResult run_edge_crack(const EdgeCrackParameters &p, std::ostream &out)
+  {
+    validate(p);
+    const double half = 0.5 * p.box_size;
+    const double h    = p.horizon / p.horizon_ratio;
+    local::Region region;
+    region.body.outline = {-4. * half, -4. * half, 4. * half, 4. * half}; // every box edge interior
+    region.box          = {-half, -half, half, half};
+    region.cracks       = {{{-half - h, 0.}, {0., 0.}}};
+    const local::PdModel model(p.material, p.horizon, p.horizon_ratio, region);
+
+    const auto  &mat   = model.material();
+    const double kc    = mat.critical_sif();
+    const double kappa = lefm::kolosov(mat.poisson_ratio(), p.material.plane_strain);
+    out << "PD edge crack: box " << p.box_size << " m, delta " << p.horizon << " m, m = " << p.horizon_ratio
+        << ", " << model.nodes().size() << " nodes (" << model.boundary_layer().size()
+        << " in the boundary layer), K_c = " << kc << " Pa m^1/2\n";
+
+    local::BoundaryLayer           layer(model);
+    local::State                   s = model.initial_state();
+    const local::DynamicRelaxation relax(model, p.tolerance, p.max_iterations);
+    std::unique_ptr<local::PvdSeries> series;
+    std::ofstream                     table;
+    if (!p.output_directory.empty())
+      {
+        series = std::make_unique<local::PvdSeries>(p.output_directory, "pd");
+        table.open(p.output_directory + "/load_steps.csv");
+        table << "step,k_over_kc,crack_extension_m,max_damage,iterations,seconds\n";
+      }
+
+    EdgeCrackResult result;
+    result.spacing  = h;
+    double previous = 0.;
+    const auto t0   = std::chrono::steady_clock::now();
+    for (std::size_t n = 0; n < p.load_steps; ++n)
+      {
+        const auto   t_step = std::chrono::steady_clock::now();
+        const double k =
+          p.load_steps == 1 ? p.k_end : p.k_start + (p.k_end - p.k_start) * double(n) / double(p.load_steps - 1);
+        // Start from the last equilibrium scaled to the new load (exact while the box is elastic).
+        for (std::size_t i : model.nodes())
+          {
+            s.ux[i] = previous > 0. ? s.ux[i] * k / previous : 0.;
+            s.uy[i] = previous > 0. ? s.uy[i] * k / previous : 0.;
+          }
+        layer.set_target([&](geometry::Point x) {
+          return lefm::williams_displacement(x, {0., 0.}, {1., 0.}, k * kc, 0., mat.shear_modulus(), kappa);
+        });
+        layer.apply(s, 1.);
+        const auto relaxed = relax.solve(s);
+        if (!relaxed.converged)
+          out << "  warning: dynamic relaxation stopped at residual " << relaxed.residual << " after "
+              << relaxed.iterations << " iterations\n";
+        previous = k;
+
+        const auto    damage = model.damage(s);
+        EdgeCrackStep step;
+        step.k_over_kc  = k;
+        step.iterations = relaxed.iterations;
+        double tip      = 0.; // the initial tip: face nodes of the pre-crack end at x = -h/2
+        for (std::size_t i : model.nodes())
+          {
+            step.max_damage = std::max(step.max_damage, damage[i]);
+            const auto x    = model.lattice().position(i);
+            if (damage[i] > p.crack_damage && std::abs(x.y) < 0.5 * half)
+              tip = std::max(tip, x.x + 0.5 * h);
+          }
+        step.extension = tip;
+        step.seconds   = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_step).count();
+        result.steps.push_back(step);
+        if (result.onset_k_over_kc == 0. && step.extension >= 2. * h)
+          result.onset_k_over_kc = k;
+
+        const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        const double eta     = elapsed / double(n + 1) * double(p.load_steps - n - 1);
+        out << "load step " << std::setw(3) << n + 1 << "/" << p.load_steps << "  K/K_c " << std::setw(6) << k
+            << "  DR iterations " << std::setw(6) << relaxed.iterations << "  max damage " << std::setw(8)
+            << step.max_damage << "  crack growth " << std::setw(9) << step.extension << " m  ETA "
+            << std::fixed << std::setprecision(0) << eta << " s" << std::defaultfloat << std::setprecision(6)
+            << "\n";
+        if (table)
+          table << n + 1 << "," << k << "," << step.extension << "," << step.max_damage << ","
+                << relaxed.iterations << "," << step.seconds << "\n";
+        if (series && ((n + 1) % p.output_interval == 0 || n + 1 == p.load_steps))
+          series->add(model, s);
+        if (p.growth_to_stop > 0. && step.extension >= p.growth_to_stop)
+          break;
+      }
+    if (!p.output_directory.empty())
+      local::write_checkpoint(p.output_directory + "/checkpoint.h5", model, s,
+                              {{"k_over_kc", previous}, {"load_steps_done", double(result.steps.size())}});
+
+    const auto damage = model.damage(s);
+    for (std::size_t i : model.nodes())
+      {
+        const auto x = model.lattice().position(i);
+        if (damage[i] > p.crack_damage && x.x > 0.)
+          {
+            result.crack_nodes.push_back(x);
+            result.max_offset = std::max(result.max_offset, std::abs(x.y));
+          }
+      }
+    return result;
+  }
+} // namespace pumpd::coupling
