@@ -283,12 +283,15 @@ namespace pumpd::local
 
   std::vector<double> PdModel::damage(const State &s) const
   {
+    const double        h = grid.spacing();
     std::vector<double> lost(grid.storage_size(), 0.), all(grid.storage_size(), 0.);
     for_each_existing_bond([&](std::size_t k, std::size_t i, std::size_t j) {
       const double w = st.weight[k];
       all[i] += w;
       all[j] += w;
-      if (bit(s.broken, k * plane_words, i))
+      const double r = st.length[k] * h;
+      const double S = ((s.ux[j] - s.ux[i]) * st.ex[k] + (s.uy[j] - s.uy[i]) * st.ey[k]) / r;
+      if (bit(s.broken, k * plane_words, i) || std::abs(S) > mat.inflection_stretch(r))
         {
           lost[i] += w;
           lost[j] += w;

@@ -73,7 +73,9 @@ namespace pumpd::local
 
     double elastic_energy(const State &s) const;
     double kinetic_energy(const State &s) const;
-    /// Per node: weighted fraction of the node's existing bonds that are broken.
+    /// Per node: weighted fraction of the node's existing bonds that have failed: broken for good,
+    /// or softened past the inflection stretch S_c (Lipton's fracture set: such a bond has
+    /// spent most of its fracture energy; by 3 S_c, 99 %).
     std::vector<double> damage(const State &s) const;
     /// Per node: Z = max over its existing bonds of |S| / S_c(|xi|).
     std::vector<double> stretch_ratio(const State &s) const;

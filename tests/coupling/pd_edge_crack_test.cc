@@ -1,0 +1,33 @@
+// Validation 4: mode-I edge crack in a PD box driven by the Williams field of a slowly rising K
+// (dynamic relaxation at each level). LEFM: the crack starts to grow at K_I = K_c = sqrt(E' G_c);
+// by symmetry it grows along the crack line. Asserted: onset (first K with growth >= 2 h) within
+// 15 % of K_c; the grown crack (nodes with damage above the threshold, ahead of the initial tip)
+// within 2 h of the symmetry line; and that it did grow (>= 5 h), so the check has something to check.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+
+#include "metric.h"
+#include "pd_edge_crack.h"
+
+using namespace pumpd;
+
+TEST(EdgeCrack, OnsetAtKcAndStraightGrowth)
+{
+  coupling::EdgeCrackParameters p; // the decks' PMMA, delta = 4 mm, m = 4, 96 x 96 nodes
+  p.k_start    = 0.8;
+  p.k_end      = 1.3;
+  p.load_steps = 21; // K steps of 0.025 K_c
+  const auto r = coupling::run_edge_crack(p, std::cout);
+
+  ASSERT_GT(r.onset_k_over_kc, 0.) << "the crack never grew";
+  const double onset_error = std::abs(r.onset_k_over_kc - 1.);
+  const double offset      = r.max_offset / r.spacing;
+  EXPECT_LT(onset_error, 0.15);
+  EXPECT_LE(offset, 2.);
+  EXPECT_GE(r.steps.back().extension, 5. * r.spacing);
+  test::metric("pd.onset_load_rel_err", onset_error);
+  test::metric("pd.crack_offset_over_h", offset);
+  test::metric("pd.crack_growth_at_1.3Kc_over_h", r.steps.back().extension / r.spacing);
+}
