@@ -57,7 +57,7 @@ int main(int argc, char **argv)
     {
       dealii::ParameterHandler prm;
       pumpd::coupling::declare_parameters(prm);
-      prm.print_parameters(std::cout, dealii::ParameterHandler::Text);
+      prm.print_parameters(std::cout, dealii::ParameterHandler::Description);
       return 0;
     }
   try

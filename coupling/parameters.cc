@@ -7,53 +7,64 @@ namespace pumpd::coupling
   using dealii::ParameterHandler;
   namespace Patterns = dealii::Patterns;
 
+  namespace
+  {
+    /// declare_entry with the default appended to the documentation, so that
+    /// `pumpd --print-parameters` lists value range, documentation and default together.
+    void entry(ParameterHandler &prm, const std::string &name, const std::string &default_value,
+               const Patterns::PatternBase &pattern, const std::string &documentation)
+    {
+      prm.declare_entry(name, default_value, pattern, documentation + " Default: " + default_value + ".");
+    }
+  } // namespace
+
   void declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Scene");
-    prm.declare_entry("Type", "pd-edge-crack", Patterns::Selection("pd-edge-crack"),
+    entry(prm, "Type", "pd-edge-crack", Patterns::Selection("pd-edge-crack"),
                       "Which scene to run. pd-edge-crack: a PD box around a mode-I edge-crack tip, "
                       "its boundary layer driven by the Williams field of a rising K.");
-    prm.declare_entry("Output directory", "out", Patterns::DirectoryName(),
+    entry(prm, "Output directory", "out", Patterns::DirectoryName(),
                       "Where VTU/PVD, load_steps.csv and checkpoint.h5 go (created if missing).");
     prm.leave_subsection();
 
     prm.enter_subsection("Material");
-    prm.declare_entry("Young's modulus", "2.4e9", Patterns::Double(0.), "E [Pa], > 0.");
-    prm.declare_entry("Fracture energy", "500", Patterns::Double(0.), "Critical energy release rate G_c [J/m^2], > 0.");
-    prm.declare_entry("Density", "1200", Patterns::Double(0.), "rho [kg/m^3], > 0.");
-    prm.declare_entry("Plane strain", "true", Patterns::Bool(),
+    entry(prm, "Young's modulus", "2.4e9", Patterns::Double(0.), "E [Pa], > 0.");
+    entry(prm, "Fracture energy", "500", Patterns::Double(0.), "Critical energy release rate G_c [J/m^2], > 0.");
+    entry(prm, "Density", "1200", Patterns::Double(0.), "rho [kg/m^3], > 0.");
+    entry(prm, "Plane strain", "true", Patterns::Bool(),
                       "true: plane strain (bond-based PD fixes nu = 1/4); false: plane stress (nu = 1/3).");
     prm.leave_subsection();
 
     prm.enter_subsection("Peridynamics");
-    prm.declare_entry("Horizon", "0.004", Patterns::Double(0.), "delta [m], > 0.");
-    prm.declare_entry("Horizon over spacing", "4", Patterns::Integer(2, 64),
+    entry(prm, "Horizon", "0.004", Patterns::Double(0.), "delta [m], > 0.");
+    entry(prm, "Horizon over spacing", "4", Patterns::Integer(2, 64),
                       "m = delta / h, an integer in [2, 64]: the lattice spacing is h = delta / m.");
-    prm.declare_entry("Influence function", "linear", Patterns::Selection("constant|linear"),
+    entry(prm, "Influence function", "linear", Patterns::Selection("constant|linear"),
                       "J(r): constant 1, or linear 12 (1 - r) (the published decks).");
-    prm.declare_entry("Bond break factor", "10", Patterns::Double(1.),
+    entry(prm, "Bond break factor", "10", Patterns::Double(1.),
                       "A bond fails for good beyond this multiple (>= 1) of its inflection stretch "
                       "S_c = 1 / sqrt(2 beta |xi|); the decks use 10.");
-    prm.declare_entry("Relaxation tolerance", "1e-6", Patterns::Double(1e-14, 0.5),
+    entry(prm, "Relaxation tolerance", "1e-6", Patterns::Double(1e-14, 0.5),
                       "Dynamic relaxation stops when |f| / (k |u|) falls below this, in [1e-14, 0.5].");
-    prm.declare_entry("Relaxation max iterations", "200000", Patterns::Integer(1),
+    entry(prm, "Relaxation max iterations", "200000", Patterns::Integer(1),
                       "Upper bound on dynamic relaxation iterations per load step, >= 1.");
     prm.leave_subsection();
 
     prm.enter_subsection("Edge crack");
-    prm.declare_entry("Box size", "0.096", Patterns::Double(0.),
+    entry(prm, "Box size", "0.096", Patterns::Double(0.),
                       "Side of the square PD box [m], >= 4 horizons; the crack tip is at its centre.");
-    prm.declare_entry("First K over K_c", "0.6", Patterns::Double(0., 1000.),
+    entry(prm, "First K over K_c", "0.6", Patterns::Double(0., 1000.),
                       "K of the first load step, as a multiple of K_c = sqrt(E' G_c).");
-    prm.declare_entry("Last K over K_c", "1.4", Patterns::Double(0., 1000.),
+    entry(prm, "Last K over K_c", "1.4", Patterns::Double(0., 1000.),
                       "K of the last load step, >= the first.");
-    prm.declare_entry("Load steps", "17", Patterns::Integer(1), "Number of K levels, equally spaced, >= 1.");
-    prm.declare_entry("Crack damage threshold", "0.3", Patterns::Double(0., 1.),
+    entry(prm, "Load steps", "17", Patterns::Integer(1), "Number of K levels, equally spaced, >= 1.");
+    entry(prm, "Crack damage threshold", "0.3", Patterns::Double(0., 1.),
                       "A node with damage above this lies on the crack. A node on the face of a "
                       "straight crack has damage ~0.41 (the bonds across the crack of one side).");
-    prm.declare_entry("Stop after growth", "0", Patterns::Double(0.),
+    entry(prm, "Stop after growth", "0", Patterns::Double(0.),
                       "Stop the load steps once the crack grew this far [m]; 0 runs all steps.");
-    prm.declare_entry("Output interval", "1", Patterns::Integer(1), "Write the PD state every n load steps.");
+    entry(prm, "Output interval", "1", Patterns::Integer(1), "Write the PD state every n load steps.");
     prm.leave_subsection();
   }
 

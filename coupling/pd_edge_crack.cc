@@ -63,7 +63,8 @@ namespace pumpd::coupling
       {
         series = std::make_unique<local::PvdSeries>(p.output_directory, "pd");
         table.open(p.output_directory + "/load_steps.csv");
-        table << "step,k_over_kc,crack_extension_m,max_damage,iterations,seconds\n";
+        table << "step,k_over_kc,crack_extension_m,max_damage,elastic_energy_J_per_m,dissipated_J_per_m,"
+                 "dr_iterations,seconds\n";
       }
 
     EdgeCrackResult result;
@@ -118,7 +119,8 @@ namespace pumpd::coupling
             << "\n";
         if (table)
           table << n + 1 << "," << k << "," << step.extension << "," << step.max_damage << ","
-                << relaxed.iterations << "," << step.seconds << "\n";
+                << model.elastic_energy(s) << "," << s.dissipated << "," << relaxed.iterations << ","
+                << step.seconds << "\n";
         if (series && ((n + 1) % p.output_interval == 0 || n + 1 == p.load_steps))
           series->add(model, s);
         if (p.growth_to_stop > 0. && step.extension >= p.growth_to_stop)
@@ -128,10 +130,18 @@ namespace pumpd::coupling
       local::write_checkpoint(p.output_directory + "/checkpoint.h5", model, s,
                               {{"k_over_kc", previous}, {"load_steps_done", double(result.steps.size())}});
 
-    const auto damage = model.damage(s);
+    const auto    damage = model.damage(s);
+    std::ofstream map;
+    if (!p.output_directory.empty())
+      {
+        map.open(p.output_directory + "/damage.csv");
+        map << "x_m,y_m,damage\n";
+      }
     for (std::size_t i : model.nodes())
       {
         const auto x = model.lattice().position(i);
+        if (map)
+          map << x.x << "," << x.y << "," << damage[i] << "\n";
         if (damage[i] > p.crack_damage && x.x > 0.)
           {
             result.crack_nodes.push_back(x);
