@@ -1,0 +1,27 @@
+// pumpd_local: bond-based peridynamics in a box, no deal.II (DESIGN.md, local/).
+//
+//   geometry.h        points, boxes, circles, polylines, the body (outline minus holes)
+//   material.h        Lipton's softening bond potential: C, beta, S_c from E, G_c, nu, J
+//   lattice.h         the node lattice with ghost padding, the half stencil and its weights
+//   model.h           PdModel: nodes, bonds (holes, pre-cracks), boundary layer, force kernel,
+//                     energies, damage, stretch ratio Z, stable time step
+//   boundary_layer.h  prescribed, ramped displacement of the boundary layer
+//   integrators.h     velocity Verlet (stability bound enforced), dynamic relaxation
+//   explicit_run.h    a dynamic run that stops on NaN and saves the last good state
+//   checkpoint.h      HDF5 checkpoint / restart (bit for bit)
+//   vtu_output.h      VTU / PVD for ParaView
+//   lefm.h            Williams near-tip fields (reference and driving data)
+//   error.h           InvalidParameter (names the parameter and its range), NonFiniteState
+#pragma once
+
+#include "boundary_layer.h"
+#include "checkpoint.h"
+#include "error.h"
+#include "explicit_run.h"
+#include "geometry.h"
+#include "integrators.h"
+#include "lattice.h"
+#include "lefm.h"
+#include "material.h"
+#include "model.h"
+#include "vtu_output.h"
