@@ -1,0 +1,74 @@
+// A crack in the global problem: a polyline that grows at its tips (DESIGN.md, global/).
+// Plain geometry, no deal.II: level sets, tip frames and the enrichment functions' values.
+//
+// Ends: an end on the body outline is a mouth (edge crack), any other end is a tip. Level sets:
+//   phi(x): signed distance to the crack extended by the rays tangent to its end segments;
+//           + on the left of the polyline (walking from the first to the last vertex). At a point
+//           whose nearest crack point is an interior vertex the sign comes from the
+//           pseudo-normal (the mean of the two adjacent segment normals).
+//   tip frame: position, unit direction of propagation (along the end segment, outward).
+//   (r, theta) about a tip: r = |x - tip|, theta = side(x) acos((x - tip).d / r) in [-pi, pi],
+//           so theta = +-pi on the crack faces even when the crack behind the tip is kinked.
+// Branch functions (Fleming et al. 1997; Moes et al. 1999):
+//   F1 = sqrt(r) sin(t/2), F2 = sqrt(r) cos(t/2), F3 = sqrt(r) sin(t/2) sin t, F4 = sqrt(r) cos(t/2) sin t
+// with grad theta = side(x) sign(y') grad(polar angle), y' the coordinate normal to the tip direction.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <vector>
+
+#include "geometry.h"
+
+namespace pumpd::global
+{
+  using geometry::Point;
+
+  struct Tip
+  {
+    Point       position;
+    Point       direction;  ///< unit vector, pointing away from the crack
+    std::size_t vertex = 0; ///< index of the tip vertex in vertices() (0 or last)
+  };
+
+  /// Values and gradients of the four branch functions at a point.
+  struct BranchValues
+  {
+    std::array<double, 4> value{};
+    std::array<Point, 4>  gradient{};
+  };
+
+  class Crack
+  {
+  public:
+    /// Throws InvalidParameter ("Crack", with the reason) if there are fewer than 2 vertices, two
+    /// consecutive vertices coincide, the polyline intersects itself, a vertex lies outside the
+    /// body outline or inside a hole, or no end is a tip. tolerance decides "on the outline".
+    Crack(geometry::Polyline vertices, const geometry::Body &body, double tolerance);
+
+    const geometry::Polyline &vertices() const { return points; }
+    const std::vector<Tip>   &tips() const { return tip_list; }
+    double                    length() const;
+
+    double signed_distance(Point x) const;
+    /// +1 where signed_distance >= 0, -1 elsewhere: the Heaviside function.
+    int side(Point x) const;
+    /// (r, theta) of x about tip t.
+    std::array<double, 2> polar(Point x, std::size_t t) const;
+    BranchValues          branch_functions(Point x, std::size_t t) const;
+    /// Index of the tip nearest to x.
+    std::size_t nearest_tip(Point x) const;
+
+    /// Extends tip t to new_position (a new segment). Throws InvalidParameter if the new segment
+    /// crosses the crack or leaves the body; the tip frame follows the new segment.
+    void grow(std::size_t t, Point new_position);
+
+  private:
+    void update_tips();
+
+    geometry::Polyline points;
+    geometry::Body     body;
+    double             tol;
+    std::vector<Tip>   tip_list;
+  };
+} // namespace pumpd::global
