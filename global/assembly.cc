@@ -1,0 +1,241 @@
+// EnrichedElasticity: the enriched basis at quadrature points, assembly of
+// a(u, v) = int lambda div u div v + 2 mu eps(u):eps(v) and of the loads, and the direct solve.
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/sparse_direct.h>
+
+#include <chrono>
+#include <optional>
+
+#include "elasticity_impl.h"
+#include "error.h"
+
+namespace pumpd::global
+{
+  using namespace dealii;
+  using Cell = DoFHandler<2>::active_cell_iterator;
+
+  void EnrichedElasticity::Impl::evaluate(const FEValuesBase<2> &fv, const std::vector<LocalFunction> &functions,
+                                          const std::vector<int> &side, BasisValues &out) const
+  {
+    const unsigned int nq = fv.n_quadrature_points, nf = functions.size();
+    out.value.assign(nf, std::vector<double>(nq, 0.));
+    out.grad.assign(nf, std::vector<Tensor<1, 2>>(nq));
+    std::array<std::optional<BranchValues>, 2> branch; // per tip, at the current point
+    for (unsigned int q = 0; q < nq; ++q)
+      {
+        branch = {};
+        for (unsigned int f = 0; f < nf; ++f)
+          {
+            const LocalFunction &fn = functions[f];
+            double               g  = 1.; // psi(x) - psi(x_p)
+            Tensor<1, 2>         grad_psi;
+            if (fn.kind == 0)
+              g = side[q] - fn.shift;
+            else if (fn.kind > 0)
+              {
+                if (!branch[fn.tip])
+                  branch[fn.tip] = crack->branch_functions(to_point(fv.quadrature_point(q)), fn.tip);
+                g           = branch[fn.tip]->value[fn.kind - 1] - fn.shift;
+                const auto d = branch[fn.tip]->gradient[fn.kind - 1];
+                grad_psi[0] = d.x;
+                grad_psi[1] = d.y;
+              }
+            double       value = 0.;
+            Tensor<1, 2> grad;
+            for (unsigned int v = 0; v < 4; ++v)
+              if (fn.weight[v] != 0.)
+                {
+                  const double N = fv.shape_value(v, q);
+                  value += fn.weight[v] * N * g;
+                  grad += fn.weight[v] * (fv.shape_grad(v, q) * g + N * grad_psi);
+                }
+            out.value[f][q] = value;
+            out.grad[f][q]  = grad;
+          }
+      }
+  }
+
+  void EnrichedElasticity::Impl::field(const FEValuesBase<2> &fv, const std::vector<LocalFunction> &functions,
+                                       const std::vector<int> &side, std::vector<Tensor<1, 2>> &u,
+                                       std::vector<Tensor<2, 2>> &grad) const
+  {
+    BasisValues basis;
+    evaluate(fv, functions, side, basis);
+    const unsigned int nq = fv.n_quadrature_points;
+    u.assign(nq, Tensor<1, 2>());
+    grad.assign(nq, Tensor<2, 2>());
+    for (unsigned int f = 0; f < functions.size(); ++f)
+      for (unsigned int c = 0; c < 2; ++c)
+        {
+          const double U = solution(functions[f].dof + c);
+          for (unsigned int q = 0; q < nq; ++q)
+            {
+              u[q][c] += U * basis.value[f][q];
+              grad[q][c] += U * basis.grad[f][q];
+            }
+        }
+  }
+
+  void EnrichedElasticity::Impl::assemble()
+  {
+    matrix = 0.;
+    rhs    = 0.;
+    const double      lambda = material.lambda(), mu = material.mu();
+    const UpdateFlags flags  = update_values | update_gradients | update_quadrature_points | update_JxW_values;
+    FEValues<2>       fv_plain(mapping, fe, gauss, flags), fv_tip(mapping, fe, gauss_tip, flags);
+    BasisValues       basis;
+    std::vector<int>  side;
+    std::vector<types::global_dof_index> local;
+    FullMatrix<double> K;
+    Vector<double>     F;
+
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        const auto       functions = local_functions(cell);
+        const CellData  &data      = cells[cell->active_cell_index()];
+        std::optional<FEValues<2>> fv_cut;
+        FEValues<2>     *fv = data.tip_enriched ? &fv_tip : &fv_plain;
+        if (data.subdivided)
+          fv = &fv_cut.emplace(mapping, fe, data.quadrature, flags);
+        fv->reinit(cell);
+        const unsigned int nq = fv->n_quadrature_points, nf = functions.size();
+        side.resize(nq);
+        for (unsigned int q = 0; q < nq; ++q)
+          side[q] = crack ? side_at(cell, q, fv->quadrature_point(q)) : 1;
+        evaluate(*fv, functions, side, basis);
+
+        K.reinit(2 * nf, 2 * nf);
+        F.reinit(2 * nf);
+        for (unsigned int q = 0; q < nq; ++q)
+          {
+            const double JxW = fv->JxW(q);
+            for (unsigned int a = 0; a < nf; ++a)
+              {
+                const Tensor<1, 2> &ga = basis.grad[a][q];
+                for (unsigned int b = 0; b < nf; ++b)
+                  {
+                    const Tensor<1, 2> &gb = basis.grad[b][q];
+                    const double        gg = ga * gb;
+                    for (unsigned int c = 0; c < 2; ++c)
+                      for (unsigned int d = 0; d < 2; ++d)
+                        K(2 * a + c, 2 * b + d) +=
+                          (lambda * ga[c] * gb[d] + mu * (ga[d] * gb[c] + (c == d ? gg : 0.))) * JxW;
+                  }
+              }
+            if (body_force)
+              {
+                const auto b = body_force(to_point(fv->quadrature_point(q)));
+                for (unsigned int a = 0; a < nf; ++a)
+                  {
+                    F(2 * a) += b.x * basis.value[a][q] * JxW;
+                    F(2 * a + 1) += b.y * basis.value[a][q] * JxW;
+                  }
+              }
+          }
+        local.clear();
+        for (const auto &f : functions)
+          {
+            local.push_back(f.dof);
+            local.push_back(f.dof + 1);
+          }
+        constraints.distribute_local_to_global(K, F, local, matrix, rhs);
+      }
+
+    // Tractions on boundary faces. A face the crack mouth cuts is integrated on its two parts
+    // (the traction and the enriched functions jump there); the side of each point comes from
+    // the crack's level set.
+    const QGauss<1>  face_rule(settings.tip_order);
+    const UpdateFlags face_flags = update_values | update_gradients | update_quadrature_points | update_JxW_values;
+    for (const auto &bc : tractions)
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        for (const auto f : cell->face_indices())
+          if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == bc.id)
+            {
+              Quadrature<1> rule = face_rule;
+              if (crack)
+                {
+                  const Point a = to_point(cell->face(f)->vertex(0)), b = to_point(cell->face(f)->vertex(1));
+                  const auto &v = crack->vertices();
+                  for (std::size_t s = 0; s + 1 < v.size(); ++s)
+                    {
+                      const Point  d = b - a, e = v[s + 1] - v[s];
+                      const double den = cross(d, e);
+                      if (std::abs(den) < 1e-14 * geometry::norm(d) * geometry::norm(e))
+                        continue;
+                      const double t = cross(v[s] - a, e) / den, u = cross(v[s] - a, d) / den;
+                      if (t > 1e-12 && t < 1. - 1e-12 && u >= 0. && u <= 1.)
+                        {
+                          std::vector<dealii::Point<1>> points;
+                          std::vector<double>           weights;
+                          for (const auto &[lo, hi] : {std::pair<double, double>{0., t}, {t, 1.}})
+                            for (unsigned int q = 0; q < face_rule.size(); ++q)
+                              {
+                                points.emplace_back(lo + (hi - lo) * face_rule.point(q)[0]);
+                                weights.push_back((hi - lo) * face_rule.weight(q));
+                              }
+                          rule = Quadrature<1>(points, weights);
+                        }
+                    }
+                }
+              FEFaceValues<2> fv_face(mapping, fe, rule, face_flags);
+              fv_face.reinit(cell, f);
+              const auto functions = local_functions(cell);
+              side.resize(rule.size());
+              for (unsigned int q = 0; q < rule.size(); ++q)
+                side[q] = crack ? crack->side(to_point(fv_face.quadrature_point(q))) : 1;
+              BasisValues face_basis;
+              evaluate(fv_face, functions, side, face_basis);
+              F.reinit(2 * functions.size());
+              for (unsigned int q = 0; q < rule.size(); ++q)
+                {
+                  const auto t = bc.value(to_point(fv_face.quadrature_point(q)));
+                  for (unsigned int a = 0; a < functions.size(); ++a)
+                    {
+                      F(2 * a) += t.x * face_basis.value[a][q] * fv_face.JxW(q);
+                      F(2 * a + 1) += t.y * face_basis.value[a][q] * fv_face.JxW(q);
+                    }
+                }
+              local.clear();
+              for (const auto &fn : functions)
+                {
+                  local.push_back(fn.dof);
+                  local.push_back(fn.dof + 1);
+                }
+              constraints.distribute_local_to_global(F, local, rhs);
+            }
+
+    // Point loads act on the standard unknowns of their node: every enriched function vanishes
+    // at the nodes (shifted enrichment), so the nodal force is all there is.
+    for (const auto &load : point_loads)
+      {
+        const double tol = 1e-6 * GridTools::minimal_cell_diameter(tria);
+        bool         found = false;
+        for (unsigned int p = 0; p < nodes.size() && !found; ++p)
+          if (geometry::norm(to_point(support[nodes[p]]) - load.at) <= tol)
+            {
+              found = true;
+              if (!constraints.is_constrained(2 * p))
+                rhs(2 * p) += load.force.x;
+              if (!constraints.is_constrained(2 * p + 1))
+                rhs(2 * p + 1) += load.force.y;
+            }
+        if (!found)
+          throw InvalidParameter("Point load position", "(" + std::to_string(load.at.x) + ", " + std::to_string(load.at.y) + ")",
+                                 "must be a vertex of the mesh");
+      }
+  }
+
+  SolveReport EnrichedElasticity::Impl::solve()
+  {
+    const auto          start = std::chrono::steady_clock::now();
+    SparseDirectUMFPACK direct;
+    direct.initialize(matrix);
+    direct.vmult(solution, rhs);
+    constraints.distribute(solution);
+    SolveReport report;
+    report.solver  = "UMFPACK";
+    report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return report;
+  }
+} // namespace pumpd::global

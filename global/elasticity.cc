@@ -1,0 +1,116 @@
+#include "elasticity.h"
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/grid_tools_cache.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparse_direct.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "cut_cell.h"
+#include "elasticity_impl.h"
+#include "error.h"
+
+namespace pumpd::global
+{
+  using namespace dealii;
+
+  double ElasticMaterial::mu() const { return youngs_modulus / (2. * (1. + poisson_ratio)); }
+
+  double ElasticMaterial::lambda() const
+  {
+    const double l = youngs_modulus * poisson_ratio / ((1. + poisson_ratio) * (1. - 2. * poisson_ratio));
+    return plane_strain ? l : 2. * l * mu() / (l + 2. * mu());
+  }
+
+  double ElasticMaterial::effective_modulus() const
+  {
+    return plane_strain ? youngs_modulus / (1. - poisson_ratio * poisson_ratio) : youngs_modulus;
+  }
+
+  double ElasticMaterial::kolosov() const
+  {
+    return plane_strain ? 3. - 4. * poisson_ratio : (3. - poisson_ratio) / (1. + poisson_ratio);
+  }
+
+  EnrichedElasticity::EnrichedElasticity(Triangulation<2, 2> &tria, const ElasticMaterial &material,
+                                         const EnrichmentSettings &settings)
+    : impl(std::make_unique<Impl>(tria, material, settings))
+  {
+    require_positive("Young's modulus", material.youngs_modulus);
+    require_range("Poisson's ratio", material.poisson_ratio, 0., 0.5 - 1e-12,
+                  "must be in [0, 0.5) (0.5 is incompressible: locking)");
+  }
+
+  EnrichedElasticity::~EnrichedElasticity() = default;
+
+  void EnrichedElasticity::set_crack(std::optional<Crack> crack) { impl->crack = std::move(crack); }
+  const std::optional<Crack> &EnrichedElasticity::crack() const { return impl->crack; }
+
+  void EnrichedElasticity::add_dirichlet(unsigned int id, SidedField value, bool fix_x, bool fix_y)
+  {
+    impl->dirichlet.push_back({id, std::move(value), fix_x, fix_y});
+  }
+
+  void EnrichedElasticity::add_dirichlet_vertex(geometry::Point at, geometry::Point value, bool fix_x, bool fix_y)
+  {
+    impl->vertex_dirichlet.push_back({at, value, fix_x, fix_y});
+  }
+
+  void EnrichedElasticity::add_traction(unsigned int id, std::function<geometry::Point(geometry::Point)> t)
+  {
+    impl->tractions.push_back({id, std::move(t)});
+  }
+
+  void EnrichedElasticity::add_point_load(geometry::Point at, geometry::Point force)
+  {
+    impl->point_loads.push_back({at, force});
+  }
+
+  void EnrichedElasticity::set_body_force(std::function<geometry::Point(geometry::Point)> f)
+  {
+    impl->body_force = std::move(f);
+  }
+
+  void EnrichedElasticity::setup() { impl->setup(); }
+  void EnrichedElasticity::assemble() { impl->assemble(); }
+  SolveReport EnrichedElasticity::solve() { return impl->solve(); }
+
+  unsigned int EnrichedElasticity::n_dofs() const { return impl->n_dofs; }
+  unsigned int EnrichedElasticity::n_enriched_dofs() const { return impl->n_dofs - 2 * impl->nodes.size(); }
+  unsigned int EnrichedElasticity::n_heaviside_nodes() const { return impl->count(NodeKind::heaviside); }
+  unsigned int EnrichedElasticity::n_tip_nodes() const { return impl->count(NodeKind::tip); }
+
+  geometry::Point EnrichedElasticity::displacement(geometry::Point x, int side) const
+  {
+    return impl->displacement(x, side);
+  }
+
+  ErrorNorms EnrichedElasticity::errors(const SidedField &exact,
+                                        const std::function<std::array<double, 4>(geometry::Point, int)> &grad) const
+  {
+    return impl->errors(exact, grad);
+  }
+
+  std::vector<StressIntensity> EnrichedElasticity::stress_intensity_factors(double radius_factor) const
+  {
+    return impl->stress_intensity_factors(radius_factor);
+  }
+
+  void EnrichedElasticity::write_vtu(const std::string &filename) const { impl->write_vtu(filename); }
+} // namespace pumpd::global

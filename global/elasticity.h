@@ -1,0 +1,130 @@
+// Linear elasticity on the whole body with a partition-of-unity enriched crack (XFEM/GFEM),
+// in the style of the deal.II tutorials: setup / assemble / solve, then evaluation.
+//
+// Space (Moes, Dolbow & Belytschko 1999; shifted form: Belytschko et al. 2001):
+//   u(x) = sum_p phi_p(x) [ u_p + (H(x) - H(x_p)) b_p  (p in Heaviside nodes)
+//                               + sum_j (F_j(x) - F_j(x_p)) c_pj  (p in tip nodes) ]
+// phi_p: the Q1 hat function of node p. Heaviside nodes: support cut completely by the crack,
+// no tip in it, smaller side of the support at least `min_cut_fraction` of it. Tip nodes: within
+// `tip_radius` of a tip (geometric enrichment) or on a cell that holds the tip. The enriched
+// degrees of freedom are managed here, on top of a scalar Q1 DoFHandler, rather than with
+// FE_Enriched: the shift by the nodal value is per node, which FE_Enriched cannot express
+// (../shared/notes/xfem-in-deal.ii-9.4.md). Hanging nodes: a cell's basis takes each hanging
+// vertex's function through its parents (the hanging-node constraints of the scalar Q1 space),
+// each with the parent's own shift, so the enriched space stays conforming under refinement.
+#pragma once
+
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "crack.h"
+#include "geometry.h"
+
+namespace dealii
+{
+  template <int dim, int spacedim>
+  class Triangulation;
+}
+
+namespace pumpd::global
+{
+  struct ElasticMaterial
+  {
+    double youngs_modulus = 1.;
+    double poisson_ratio  = 0.3;
+    bool   plane_strain   = true;
+
+    double mu() const;
+    /// In-plane Lame constant: lambda (plane strain), 2 lambda mu / (lambda + 2 mu) (plane stress).
+    double lambda() const;
+    /// E / (1 - nu^2) in plane strain, E in plane stress.
+    double effective_modulus() const;
+    /// Kolosov constant: 3 - 4 nu (plane strain), (3 - nu) / (1 + nu) (plane stress).
+    double kolosov() const;
+  };
+
+  /// A displacement that may differ on the two faces of the crack: value(x, side), side = +-1
+  /// as Crack::side.
+  using SidedField = std::function<geometry::Point(geometry::Point x, int side)>;
+
+  struct EnrichmentSettings
+  {
+    double       tip_radius       = 0.;   ///< [m]; at least the largest cell diameter at a tip
+    double       min_cut_fraction = 1e-4; ///< drop H below this support fraction (conditioning)
+    unsigned int cut_order        = 4;    ///< Gauss simplex order on cut sub-triangles
+    unsigned int tip_order        = 8;    ///< Gauss / Duffy order where branch functions live
+  };
+
+  struct SolveReport
+  {
+    std::string  solver;
+    unsigned int iterations = 0;
+    double       seconds    = 0.;
+  };
+
+  struct StressIntensity
+  {
+    geometry::Point tip;
+    double          k1 = 0.;
+    double          k2 = 0.;
+  };
+
+  struct ErrorNorms
+  {
+    double l2 = 0., l2_exact = 0.;         ///< |u - u_h|_L2 and |u|_L2
+    double energy = 0., energy_exact = 0.; ///< energy norm sqrt(int eps:C:eps) of the error and of u
+  };
+
+  class EnrichedElasticity
+  {
+  public:
+    /// The triangulation must outlive this object. Throws InvalidParameter for a material out
+    /// of range (E <= 0, nu not in [0, 0.5)).
+    EnrichedElasticity(dealii::Triangulation<2, 2> &triangulation, const ElasticMaterial &material,
+                       const EnrichmentSettings &settings);
+    ~EnrichedElasticity();
+
+    /// The crack (none: plain elasticity, no enrichment assembled).
+    void set_crack(std::optional<Crack> crack);
+    const std::optional<Crack> &crack() const;
+
+    void add_dirichlet(unsigned int boundary_id, SidedField value, bool fix_x = true, bool fix_y = true);
+    void add_dirichlet_vertex(geometry::Point at, geometry::Point value, bool fix_x = true, bool fix_y = true);
+    void add_traction(unsigned int boundary_id, std::function<geometry::Point(geometry::Point)> traction);
+    void add_point_load(geometry::Point at, geometry::Point force);
+    void set_body_force(std::function<geometry::Point(geometry::Point)> force);
+
+    /// Enrichment, degrees of freedom, constraints. Throws InvalidParameter if the crack leaves
+    /// the mesh, the tip radius is smaller than a cell at a tip, or a named boundary id or vertex
+    /// does not exist.
+    void        setup();
+    void        assemble();
+    SolveReport solve();
+
+    unsigned int n_dofs() const;
+    unsigned int n_enriched_dofs() const;
+    unsigned int n_heaviside_nodes() const;
+    unsigned int n_tip_nodes() const;
+
+    /// u_h at x, on the given side of the crack where x lies on it (slow path: one cell search).
+    geometry::Point displacement(geometry::Point x, int side = 1) const;
+    /// Errors against an exact displacement and its gradient (rows du_x/dx, du_x/dy, du_y/dx, du_y/dy).
+    ErrorNorms errors(const SidedField &exact, const std::function<std::array<double, 4>(geometry::Point, int)> &grad) const;
+
+    /// K_I, K_II at every tip by the interaction integral (domain form) over the cells within
+    /// radius_factor * tip_radius of the tip.
+    std::vector<StressIntensity> stress_intensity_factors(double radius_factor = 1.) const;
+
+    /// VTU with cut cells written as their sub-triangles (the opened crack is visible):
+    /// displacement, stress, von Mises, enrichment per cell.
+    void write_vtu(const std::string &filename) const;
+
+    struct Impl;
+
+  private:
+    std::unique_ptr<Impl> impl;
+  };
+} // namespace pumpd::global

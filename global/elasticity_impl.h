@@ -1,0 +1,156 @@
+// Private to global/: the data behind EnrichedElasticity (pimpl), shared by its .cc files.
+#pragma once
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+
+#include <array>
+#include <optional>
+#include <vector>
+
+#include "cut_cell.h"
+#include "elasticity.h"
+
+namespace pumpd::global
+{
+  enum class NodeKind
+  {
+    standard,
+    heaviside,
+    tip
+  };
+
+  /// One scalar basis function of a cell: sum_v weight[v] N_v(x) (psi(x) - shift), carried by the
+  /// two unknowns dof (x) and dof + 1 (y). kind: -1 standard (psi = 1, no shift), 0 Heaviside,
+  /// 1..4 branch function F_kind of tip `tip`.
+  struct LocalFunction
+  {
+    unsigned int          dof  = 0;
+    int                   kind = -1;
+    unsigned int          tip  = 0;
+    double                shift = 0.;
+    std::array<double, 4> weight{};
+  };
+
+  /// Values and gradients of a cell's local functions at the points of an FEValues object.
+  struct BasisValues
+  {
+    std::vector<std::vector<double>>                value; ///< [function][point]
+    std::vector<std::vector<dealii::Tensor<1, 2>>> grad;
+  };
+
+  struct CellData
+  {
+    bool                      cut          = false; ///< a crack piece lies in the cell
+    bool                      subdivided   = false; ///< integrated on its own sub-triangles
+    bool                      has_tip      = false;
+    bool                      tip_enriched = false; ///< some basis function carries F_j
+    int                       side         = 1;     ///< side of an uncut cell (of its centre)
+    std::vector<SubTriangle>  triangles;            ///< subdivided cells only
+    std::vector<int>          triangle_side;
+    dealii::Quadrature<2>     quadrature;           ///< subdivided cells only
+    std::vector<unsigned int> triangle_of_point;
+  };
+
+  struct EnrichedElasticity::Impl
+  {
+    Impl(dealii::Triangulation<2> &t, const ElasticMaterial &m, const EnrichmentSettings &s)
+      : tria(t)
+      , material(m)
+      , settings(s)
+      , fe(1)
+      , dof_handler(t)
+      , gauss(2)
+      , gauss_tip(s.tip_order)
+    {}
+
+    struct Dirichlet
+    {
+      unsigned int id;
+      SidedField   value;
+      bool         fix_x, fix_y;
+    };
+    struct VertexDirichlet
+    {
+      geometry::Point at, value;
+      bool            fix_x, fix_y;
+    };
+    struct Traction
+    {
+      unsigned int                                    id;
+      std::function<geometry::Point(geometry::Point)> value;
+    };
+    struct PointLoad
+    {
+      geometry::Point at, force;
+    };
+
+    void         setup();
+    void         assemble();
+    SolveReport  solve();
+    unsigned int count(NodeKind k) const;
+
+    /// The cell's basis: standard and enriched functions of the nodes its vertices depend on.
+    std::vector<LocalFunction> local_functions(const dealii::DoFHandler<2>::active_cell_iterator &cell) const;
+    /// The cell's quadrature (sub-triangles on cut cells, higher Gauss where branch functions live).
+    const dealii::Quadrature<2> &quadrature(const dealii::DoFHandler<2>::active_cell_iterator &cell) const;
+    /// Side of the crack at quadrature point q of the cell's own quadrature.
+    int side_at(const dealii::DoFHandler<2>::active_cell_iterator &cell, unsigned int q, const dealii::Point<2> &x) const;
+    /// Values and gradients of the local functions at the points of fv; side[q] is the crack
+    /// side of point q (decides H and the sign of theta).
+    void evaluate(const dealii::FEValuesBase<2> &fv, const std::vector<LocalFunction> &functions,
+                  const std::vector<int> &side, BasisValues &out) const;
+    /// u_h and grad u_h (rows d u_x, d u_y) at the points of fv.
+    void field(const dealii::FEValuesBase<2> &fv, const std::vector<LocalFunction> &functions,
+               const std::vector<int> &side, std::vector<dealii::Tensor<1, 2>> &u,
+               std::vector<dealii::Tensor<2, 2>> &grad) const;
+
+    geometry::Point              displacement(geometry::Point x, int side) const;
+    ErrorNorms                   errors(const SidedField &exact,
+                                        const std::function<std::array<double, 4>(geometry::Point, int)> &grad) const;
+    std::vector<StressIntensity> stress_intensity_factors(double radius_factor) const;
+    void                         write_vtu(const std::string &filename) const;
+
+    dealii::Triangulation<2>  &tria;
+    ElasticMaterial            material;
+    EnrichmentSettings         settings;
+    dealii::MappingQ1<2>       mapping;
+    dealii::FE_Q<2>            fe;
+    dealii::DoFHandler<2>      dof_handler;
+    dealii::QGauss<2>          gauss, gauss_tip;
+    std::optional<Crack>       crack;
+
+    std::vector<Dirichlet>                                  dirichlet;
+    std::vector<VertexDirichlet>                            vertex_dirichlet;
+    std::vector<Traction>                                   tractions;
+    std::vector<PointLoad>                                  point_loads;
+    std::function<geometry::Point(geometry::Point)>         body_force;
+
+    // Nodes: the scalar Q1 dofs that are not hanging. parents[s]: (node, weight) for dof s.
+    std::vector<dealii::Point<2>>                           support;
+    std::vector<std::vector<std::pair<unsigned int, double>>> parents;
+    std::vector<unsigned int>                               nodes;
+    std::vector<NodeKind>                                   kind;
+    std::vector<unsigned int>                               enriched_start, node_tip;
+    std::vector<int>                                        node_side;
+    std::vector<std::array<double, 4>>                      node_branch;
+    std::vector<CellData>                                   cells;
+    unsigned int                                            n_dofs = 0;
+
+    dealii::AffineConstraints<double> constraints;
+    dealii::SparsityPattern           sparsity;
+    dealii::SparseMatrix<double>      matrix;
+    dealii::Vector<double>            rhs, solution;
+  };
+
+  inline Point to_point(const dealii::Point<2> &p) { return {p[0], p[1]}; }
+  inline dealii::Point<2> to_dealii(const Point &p) { return dealii::Point<2>(p.x, p.y); }
+} // namespace pumpd::global

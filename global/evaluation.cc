@@ -1,0 +1,295 @@
+// EnrichedElasticity: what is computed from a solution: point values, error norms against an
+// exact field, stress intensity factors (interaction integral), VTU output.
+#include <deal.II/grid/grid_tools.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <optional>
+#include <stdexcept>
+
+#include "elasticity_impl.h"
+#include "error.h"
+#include "lefm.h"
+
+namespace pumpd::global
+{
+  using namespace dealii;
+  using Cell = DoFHandler<2>::active_cell_iterator;
+
+  namespace
+  {
+    const UpdateFlags field_flags = update_values | update_gradients | update_quadrature_points | update_JxW_values;
+
+    Tensor<2, 2> stress_of(const Tensor<2, 2> &grad, double lambda, double mu)
+    {
+      const Tensor<2, 2> eps = 0.5 * (grad + transpose(grad));
+      Tensor<2, 2>       sigma = 2. * mu * eps;
+      sigma[0][0] += lambda * trace(eps);
+      sigma[1][1] += lambda * trace(eps);
+      return sigma;
+    }
+  } // namespace
+
+  geometry::Point EnrichedElasticity::Impl::displacement(geometry::Point x, int side_hint) const
+  {
+    const auto found = GridTools::find_active_cell_around_point(mapping, dof_handler, to_dealii(x));
+    const Quadrature<2> point(found.second);
+    FEValues<2>         fv(mapping, fe, point, field_flags);
+    fv.reinit(found.first);
+    int side = 1;
+    if (crack)
+      side = std::abs(crack->signed_distance(x)) < 1e-12 * found.first->diameter() ? side_hint : crack->side(x);
+    std::vector<Tensor<1, 2>> u;
+    std::vector<Tensor<2, 2>> grad;
+    field(fv, local_functions(found.first), {side}, u, grad);
+    return {u[0][0], u[0][1]};
+  }
+
+  ErrorNorms EnrichedElasticity::Impl::errors(const SidedField &exact,
+                                              const std::function<std::array<double, 4>(geometry::Point, int)> &exact_grad) const
+  {
+    ErrorNorms                e;
+    const double              lambda = material.lambda(), mu = material.mu();
+    std::vector<int>          side;
+    std::vector<Tensor<1, 2>> u;
+    std::vector<Tensor<2, 2>> grad;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        FEValues<2> fv(mapping, fe, quadrature(cell), field_flags);
+        fv.reinit(cell);
+        side.resize(fv.n_quadrature_points);
+        for (unsigned int q = 0; q < side.size(); ++q)
+          side[q] = crack ? side_at(cell, q, fv.quadrature_point(q)) : 1;
+        field(fv, local_functions(cell), side, u, grad);
+        for (unsigned int q = 0; q < side.size(); ++q)
+          {
+            const Point  x  = to_point(fv.quadrature_point(q));
+            const auto   ue = exact(x, side[q]);
+            const auto   ge = exact_grad(x, side[q]);
+            Tensor<2, 2> G;
+            G[0][0] = ge[0];
+            G[0][1] = ge[1];
+            G[1][0] = ge[2];
+            G[1][1] = ge[3];
+            const Tensor<2, 2> dG    = grad[q] - G;
+            const auto         inner = [&](const Tensor<2, 2> &g) {
+              return scalar_product(stress_of(g, lambda, mu), 0.5 * (g + transpose(g)));
+            };
+            const double JxW = fv.JxW(q);
+            e.l2 += (std::pow(u[q][0] - ue.x, 2) + std::pow(u[q][1] - ue.y, 2)) * JxW;
+            e.l2_exact += (ue.x * ue.x + ue.y * ue.y) * JxW;
+            e.energy += inner(dG) * JxW;
+            e.energy_exact += inner(G) * JxW;
+          }
+      }
+    e.l2           = std::sqrt(e.l2);
+    e.l2_exact     = std::sqrt(e.l2_exact);
+    e.energy       = std::sqrt(e.energy);
+    e.energy_exact = std::sqrt(e.energy_exact);
+    return e;
+  }
+
+  // Interaction integral, domain form (Moes, Dolbow & Belytschko 1999, Eq. 34), in the tip frame:
+  //   I = int_A [sigma_ij du^aux_i/dx_1 + sigma^aux_ij du_i/dx_1 - sigma_ik eps^aux_ik delta_1j] dq/dx_j dA,
+  //   K = E' I / 2 with the auxiliary field of unit K_I (for K_I) or unit K_II (for K_II).
+  // q is the Q1 interpolant of 1 at nodes within radius_factor * tip_radius of the tip, 0 elsewhere,
+  // so only the ring of cells where q drops contributes: no singular integrand.
+  std::vector<StressIntensity> EnrichedElasticity::Impl::stress_intensity_factors(double radius_factor) const
+  {
+    std::vector<StressIntensity> result;
+    if (!crack)
+      return result;
+    const double lambda = material.lambda(), mu = material.mu(), kappa = material.kolosov();
+    const double radius = radius_factor * settings.tip_radius;
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    std::vector<int>          side;
+    std::vector<Tensor<1, 2>> u;
+    std::vector<Tensor<2, 2>> grad;
+    for (std::size_t t = 0; t < crack->tips().size(); ++t)
+      {
+        const Tip   &tip = crack->tips()[t];
+        Tensor<2, 2> R; // rows: tip direction and its normal
+        R[0][0] = tip.direction.x;
+        R[0][1] = tip.direction.y;
+        R[1][0] = -tip.direction.y;
+        R[1][1] = tip.direction.x;
+        const auto q_of = [&](types::global_dof_index s) {
+          double q = 0.;
+          for (const auto &[p, w] : parents[s])
+            q += w * (geometry::norm(to_point(support[nodes[p]]) - tip.position) < radius ? 1. : 0.);
+          return q;
+        };
+        double I[2] = {0., 0.};
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          {
+            cell->get_dof_indices(dofs);
+            std::array<double, 4> qv;
+            bool                  ring = false;
+            for (unsigned int v = 0; v < 4; ++v)
+              {
+                qv[v] = q_of(dofs[v]);
+                ring |= qv[v] != qv[0];
+              }
+            if (!ring)
+              continue;
+            FEValues<2> fv(mapping, fe, quadrature(cell), field_flags);
+            fv.reinit(cell);
+            side.resize(fv.n_quadrature_points);
+            for (unsigned int q = 0; q < side.size(); ++q)
+              side[q] = side_at(cell, q, fv.quadrature_point(q));
+            field(fv, local_functions(cell), side, u, grad);
+            for (unsigned int q = 0; q < side.size(); ++q)
+              {
+                Tensor<1, 2> grad_q;
+                for (unsigned int v = 0; v < 4; ++v)
+                  grad_q += qv[v] * fv.shape_grad(v, q);
+                const Tensor<1, 2> dq    = R * grad_q;
+                const Tensor<2, 2> G     = R * grad[q] * transpose(R);
+                const Tensor<2, 2> sigma = stress_of(G, lambda, mu);
+                const Point        rel   = to_point(fv.quadrature_point(q)) - tip.position;
+                const double       r     = geometry::norm(rel);
+                const double x1 = dot(rel, tip.direction);
+                // theta with the sign of the sub-cell's side: it jumps across the crack faces, not
+                // across the straight extension of the last segment. The + side lies to the left
+                // of the polyline, which is the right of the tip direction at vertex 0.
+                const int    orientation = tip.vertex == 0 ? -1 : 1;
+                const double theta       = orientation * side[q] * std::acos(std::clamp(x1 / r, -1., 1.));
+                for (int mode = 1; mode <= 2; ++mode)
+                  {
+                    const auto   aux = lefm::williams(mode, r, theta, mu, kappa);
+                    Tensor<2, 2> Ga, Sa;
+                    for (unsigned int i = 0; i < 2; ++i)
+                      for (unsigned int j = 0; j < 2; ++j)
+                        {
+                          Ga[i][j] = aux.grad[i][j];
+                          Sa[i][j] = aux.stress[i][j];
+                        }
+                    const Tensor<2, 2> eps_aux = 0.5 * (Ga + transpose(Ga));
+                    double             integrand = 0.;
+                    for (unsigned int j = 0; j < 2; ++j)
+                      {
+                        double term = 0.;
+                        for (unsigned int i = 0; i < 2; ++i)
+                          term += sigma[i][j] * Ga[i][0] + Sa[i][j] * G[i][0];
+                        if (j == 0)
+                          term -= scalar_product(sigma, eps_aux);
+                        integrand += term * dq[j];
+                      }
+                    I[mode - 1] += integrand * fv.JxW(q);
+                  }
+              }
+          }
+        const double scale = 0.5 * material.effective_modulus();
+        result.push_back({tip.position, scale * I[0], scale * I[1]});
+      }
+    return result;
+  }
+
+  void EnrichedElasticity::Impl::write_vtu(const std::string &filename) const
+  {
+    struct SubCell
+    {
+      std::vector<Point>           corner;
+      std::vector<Tensor<1, 2>>    u;
+      Tensor<2, 2>                 stress;
+      int                          enrichment;
+    };
+    std::vector<SubCell> out;
+    const double         lambda = material.lambda(), mu = material.mu();
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        const CellData &data      = cells[cell->active_cell_index()];
+        const auto      functions = local_functions(cell);
+        int             enrichment = 0;
+        for (const auto &f : functions)
+          enrichment = std::max(enrichment, f.kind == 0 ? 1 : f.kind > 0 ? 2 : 0);
+        std::vector<std::vector<RefPoint>> pieces;
+        std::vector<int>                   sides;
+        if (data.cut)
+          for (unsigned int t = 0; t < data.triangles.size(); ++t)
+            {
+              const auto &v = data.triangles[t].vertex;
+              pieces.push_back({v[0], v[1], v[2]});
+              sides.push_back(data.triangle_side[t]);
+            }
+        else
+          {
+            pieces.push_back({RefPoint(0, 0), RefPoint(1, 0), RefPoint(1, 1), RefPoint(0, 1)});
+            sides.push_back(crack ? data.side : 1);
+          }
+        for (unsigned int k = 0; k < pieces.size(); ++k)
+          {
+            std::vector<dealii::Point<2>> points(pieces[k].begin(), pieces[k].end());
+            RefPoint                      centre;
+            for (const auto &p : pieces[k])
+              centre += p / double(pieces[k].size());
+            points.push_back(centre);
+            FEValues<2> fv(mapping, fe, Quadrature<2>(points), update_values | update_gradients | update_quadrature_points);
+            fv.reinit(cell);
+            std::vector<Tensor<1, 2>> u;
+            std::vector<Tensor<2, 2>> grad;
+            field(fv, functions, std::vector<int>(points.size(), sides[k]), u, grad);
+            SubCell sc;
+            for (unsigned int i = 0; i + 1 < points.size(); ++i)
+              {
+                sc.corner.push_back(to_point(fv.quadrature_point(i)));
+                sc.u.push_back(u[i]);
+              }
+            sc.stress     = stress_of(grad.back(), lambda, mu);
+            sc.enrichment = data.cut ? 3 : enrichment;
+            out.push_back(std::move(sc));
+          }
+      }
+
+    std::ofstream f(filename);
+    if (!f)
+      throw std::runtime_error("cannot write " + filename);
+    f.precision(10);
+    std::size_t n_points = 0;
+    for (const auto &sc : out)
+      n_points += sc.corner.size();
+    f << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\">\n<UnstructuredGrid>\n"
+      << "<Piece NumberOfPoints=\"" << n_points << "\" NumberOfCells=\"" << out.size() << "\">\n"
+      << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+    for (const auto &sc : out)
+      for (const auto &p : sc.corner)
+        f << p.x << ' ' << p.y << " 0\n";
+    f << "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
+    std::size_t next = 0;
+    for (const auto &sc : out)
+      {
+        for (std::size_t i = 0; i < sc.corner.size(); ++i)
+          f << next++ << ' ';
+        f << '\n';
+      }
+    f << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
+    next = 0;
+    for (const auto &sc : out)
+      f << (next += sc.corner.size()) << '\n';
+    f << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
+    for (const auto &sc : out)
+      f << (sc.corner.size() == 3 ? 5 : 9) << '\n';
+    f << "</DataArray>\n</Cells>\n<PointData Vectors=\"displacement\">\n"
+      << "<DataArray type=\"Float64\" Name=\"displacement\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+    for (const auto &sc : out)
+      for (const auto &u : sc.u)
+        f << u[0] << ' ' << u[1] << " 0\n";
+    f << "</DataArray>\n</PointData>\n<CellData>\n"
+      << "<DataArray type=\"Float64\" Name=\"stress\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+    for (const auto &sc : out)
+      f << sc.stress[0][0] << ' ' << sc.stress[1][1] << ' ' << sc.stress[0][1] << '\n';
+    f << "</DataArray>\n<DataArray type=\"Float64\" Name=\"von_mises\" format=\"ascii\">\n";
+    const double nu = material.plane_strain ? material.poisson_ratio : 0.;
+    for (const auto &sc : out)
+      {
+        const double sx = sc.stress[0][0], sy = sc.stress[1][1], sz = nu * (sx + sy), txy = sc.stress[0][1];
+        f << std::sqrt(0.5 * ((sx - sy) * (sx - sy) + (sy - sz) * (sy - sz) + (sz - sx) * (sz - sx)) + 3. * txy * txy)
+          << '\n';
+      }
+    f << "</DataArray>\n<DataArray type=\"Int32\" Name=\"enrichment\" format=\"ascii\">\n";
+    for (const auto &sc : out)
+      f << sc.enrichment << '\n';
+    f << "</DataArray>\n</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+  }
+} // namespace pumpd::global

@@ -1,0 +1,126 @@
+// Ingraffea & Grigoriu three-point-bending PMMA beam with three holes (Cases II and III): the
+// mesh of the global (XFEM) solver. The initial crack is not part of the mesh; the solver
+// enriches across it.
+//
+// Units: m. Origin at the bottom-left corner; the beam is [0, 0.508] x [0, 0.2032] minus three
+// holes of radius 0.00635 centred at x = 0.1524, y = 0.06985 / 0.12065 / 0.17145.
+// Mesh vertices (geometry points splitting the edges): supports at x = 0.0254 and x = 0.4826
+// on the bottom edge, load point at x = 0.254 on the top edge (DESIGN.md, "Units and conventions").
+//
+// Mesh: first-order quadrilaterals only. gmsh meshes triangles of size 2 h, recombines them
+// (blossom) and subdivides every element once (Mesh.SubdivisionAlgorithm = 1), which
+// guarantees an all-quad mesh with edges of about h. Cells are h * crack_zone_factor in the band
+// x in [0.0762, 0.2667] where the cracks of Cases I-III run (from the notches at x = 0.1016 and
+// 0.127 towards the holes and the load point); the solver refines further near the tips.
+// Each hole is a polygon of at least hole_segments straight edges (the mesh is first order and
+// has no curved boundary): the area lost per hole is pi r^2 (1 - sin(2 pi / N) / (2 pi / N)),
+// 2.6 % of the hole (1e-4 of the beam for the three holes) for N = 16.
+//
+// Variables (override with gmsh -setnumber <name> <value>):
+//   h                  quad edge length away from the crack band, m (default 0.008)
+//   crack_zone_factor  cell size in the crack band relative to h (default 0.5; 1 = uniform)
+//   hole_segments      minimum number of mesh edges on each hole boundary (default 16)
+//
+// Physical groups (deal.II reads the tags as material / boundary ids):
+//   Surface 1: the beam
+//   Curve 1: bottom edge (y = 0)      Curve 2: right edge (x = 0.508)
+//   Curve 3: top edge (y = 0.2032)    Curve 4: left edge (x = 0)
+//   Curve 5: the three hole boundaries
+//
+// Example: gmsh -2 -setnumber h 0.004 -format msh2 ingraffea-beam-holes.geo -o beam.msh
+
+If (!Exists(h))
+  h = 0.008;
+EndIf
+If (!Exists(crack_zone_factor))
+  crack_zone_factor = 0.5;
+EndIf
+If (!Exists(hole_segments))
+  hole_segments = 16;
+EndIf
+
+length = 0.508;
+height = 0.2032;
+x_support_left = 0.0254;
+x_support_right = 0.4826;
+x_load = 0.254;
+hole_radius = 0.00635;
+hole_x = 0.1524;
+hole_y[] = {0.06985, 0.12065, 0.17145};
+
+// Triangle sizes before the subdivision halves every edge.
+lc = 2 * h;
+lc_hole = Min(crack_zone_factor * lc, 2 * (2 * Pi * hole_radius / hole_segments));
+
+Point(1) = {0, 0, 0, lc};
+Point(2) = {x_support_left, 0, 0, lc};
+Point(3) = {x_support_right, 0, 0, lc};
+Point(4) = {length, 0, 0, lc};
+Point(5) = {length, height, 0, lc};
+Point(6) = {x_load, height, 0, lc};
+Point(7) = {0, height, 0, lc};
+
+Line(1) = {1, 2};
+Line(2) = {2, 3};
+Line(3) = {3, 4};
+Line(4) = {4, 5};
+Line(5) = {5, 6};
+Line(6) = {6, 7};
+Line(7) = {7, 1};
+
+Curve Loop(1) = {1, 2, 3, 4, 5, 6, 7};
+
+// Each hole: four quarter arcs through the points east, north, west, south of the centre.
+hole_arcs[] = {};
+For i In {0 : 2}
+  centre = newp;
+  Point(centre) = {hole_x, hole_y[i], 0, lc_hole};
+  east = newp;
+  Point(east) = {hole_x + hole_radius, hole_y[i], 0, lc_hole};
+  north = newp;
+  Point(north) = {hole_x, hole_y[i] + hole_radius, 0, lc_hole};
+  west = newp;
+  Point(west) = {hole_x - hole_radius, hole_y[i], 0, lc_hole};
+  south = newp;
+  Point(south) = {hole_x, hole_y[i] - hole_radius, 0, lc_hole};
+  a1 = newc;
+  Circle(a1) = {east, centre, north};
+  a2 = newc;
+  Circle(a2) = {north, centre, west};
+  a3 = newc;
+  Circle(a3) = {west, centre, south};
+  a4 = newc;
+  Circle(a4) = {south, centre, east};
+  hole_loop[i] = newll;
+  Curve Loop(hole_loop[i]) = {a1, a2, a3, a4};
+  hole_arcs[] += {a1, a2, a3, a4};
+EndFor
+
+Plane Surface(1) = {1, hole_loop[]};
+
+// Finer cells in the band where the cracks run, graded to lc over 0.0254 m.
+Field[1] = Box;
+Field[1].VIn = crack_zone_factor * lc;
+Field[1].VOut = lc;
+Field[1].XMin = 0.0762;
+Field[1].XMax = 0.2667;
+Field[1].YMin = -1;
+Field[1].YMax = 1;
+Field[1].Thickness = 0.0254;
+Background Field = 1;
+
+// Unnamed on purpose: deal.II's gmsh-API reader would parse a name as "BoundaryID: ...".
+Physical Surface(1) = {1};  // the beam
+Physical Curve(1) = {1, 2, 3};  // bottom
+Physical Curve(2) = {4};  // right
+Physical Curve(3) = {5, 6};  // top
+Physical Curve(4) = {7};  // left
+Physical Curve(5) = {hole_arcs[]};  // holes
+
+Mesh.ElementOrder = 1;
+Mesh.Algorithm = 6;               // Frontal-Delaunay (8, Frontal-Delaunay for quads, crashes in 4.8.4)
+Mesh.RecombineAll = 1;
+Mesh.RecombinationAlgorithm = 1;  // blossom
+Mesh.SubdivisionAlgorithm = 1;    // all quadrangles
+Mesh.Smoothing = 5;
+Mesh.MshFileVersion = 2.2;        // what dealii::GridIn<2>::read_msh is called with

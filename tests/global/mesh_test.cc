@@ -1,0 +1,287 @@
+// The Ingraffea beam meshes (meshes/*.geo) and their reader (global/mesh.h): all-quad
+// triangulations of the right area, boundary ids 1-5, vertices at the supports and the load
+// point, the characteristic length override, and the errors the reader raises.
+#include <deal.II/grid/reference_cell.h>
+#include <deal.II/grid/tria.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <string>
+
+#include "error.h"
+#include "mesh.h"
+
+namespace
+{
+  using pumpd::global::find_vertex;
+  using pumpd::global::read_mesh;
+  using pumpd::global::require_boundary_ids;
+
+  const std::string beam_geo  = PUMPD_SOURCE_DIR "/meshes/ingraffea-beam.geo";
+  const std::string holes_geo = PUMPD_SOURCE_DIR "/meshes/ingraffea-beam-holes.geo";
+
+  constexpr double length      = 0.508;
+  constexpr double height      = 0.2032;
+  constexpr double hole_radius = 0.00635;
+  const double     pi          = std::acos(-1.);
+
+  /// Meshing runs gmsh: every (file, h) is meshed once per test program.
+  const dealii::Triangulation<2> &mesh(const std::string &file, double h = 0.)
+  {
+    static std::map<std::pair<std::string, double>, dealii::Triangulation<2>> cache;
+    const auto key = std::make_pair(file, h);
+    auto       it  = cache.find(key);
+    if (it == cache.end())
+      {
+        it = cache.emplace(std::piecewise_construct, std::forward_as_tuple(key),
+                           std::forward_as_tuple())
+               .first;
+        read_mesh(file, it->second, h);
+      }
+    return it->second;
+  }
+
+  double area(const dealii::Triangulation<2> &tria)
+  {
+    double a = 0.;
+    for (const auto &cell : tria.active_cell_iterators())
+      a += cell->measure();
+    return a;
+  }
+
+  bool all_quads(const dealii::Triangulation<2> &tria)
+  {
+    for (const auto &cell : tria.active_cell_iterators())
+      if (cell->reference_cell() != dealii::ReferenceCells::Quadrilateral)
+        return false;
+    return tria.n_active_cells() > 0;
+  }
+
+  unsigned int n_boundary_faces(const dealii::Triangulation<2> &tria,
+                                dealii::types::boundary_id      id)
+  {
+    unsigned int n = 0;
+    for (const auto &cell : tria.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary() && face->boundary_id() == id)
+          ++n;
+    return n;
+  }
+
+  /// what() of the InvalidParameter that f throws; "no exception" / "other exception".
+  std::string invalid_parameter(const std::function<void()> &f)
+  {
+    try
+      {
+        f();
+      }
+    catch (const pumpd::InvalidParameter &e)
+      {
+        return e.what();
+      }
+    catch (...)
+      {
+        return "other exception";
+      }
+    return "no exception";
+  }
+
+  bool starts_with(const std::string &s, const std::string &prefix)
+  {
+    return s.rfind(prefix, 0) == 0;
+  }
+
+  /// A file in a fresh directory under the temporary directory, removed at the end.
+  class TemporaryFile
+  {
+  public:
+    TemporaryFile(const std::string &name, const std::string &content)
+    {
+      std::string dir = (std::filesystem::temp_directory_path() / "pumpd-mesh-test-XXXXXX").string();
+      if (::mkdtemp(dir.data()) == nullptr)
+        throw std::runtime_error("mkdtemp failed");
+      directory_ = dir;
+      std::ofstream(directory_ / name) << content;
+      path_ = (directory_ / name).string();
+    }
+    ~TemporaryFile()
+    {
+      std::error_code ignored;
+      std::filesystem::remove_all(directory_, ignored);
+    }
+    const std::string &path() const { return path_; }
+
+  private:
+    std::filesystem::path directory_;
+    std::string           path_;
+  };
+} // namespace
+
+TEST(GlobalMesh, BeamIsAllQuadWithTheExactArea)
+{
+  const auto &tria = mesh(beam_geo);
+  EXPECT_TRUE(all_quads(tria));
+  EXPECT_GT(tria.n_active_cells(), 1000u);
+  std::cout << "pumpd-metric beam_cells " << tria.n_active_cells() << '\n';
+  // A polygon: meshed exactly up to round-off.
+  EXPECT_NEAR(area(tria), length * height, 1e-12 * length * height);
+}
+
+TEST(GlobalMesh, BeamWithHolesLosesThePolygonAreaOfTheHoles)
+{
+  const auto &tria = mesh(holes_geo);
+  EXPECT_TRUE(all_quads(tria));
+  std::cout << "pumpd-metric beam_holes_cells " << tria.n_active_cells() << '\n';
+
+  // Each hole is a regular polygon of N edges inscribed in the circle (four arcs, each split
+  // evenly); it keeps pi r^2 sin(2 pi / N) / (2 pi / N) of the circle's area as hole, so the
+  // mesh has 3 pi r^2 (1 - sin(2 pi / N) / (2 pi / N)) more area than the exact body.
+  const unsigned int hole_faces = n_boundary_faces(tria, 5);
+  ASSERT_EQ(hole_faces % 3, 0u);
+  const unsigned int n = hole_faces / 3;
+  EXPECT_GE(n, 16u); // hole_segments in the .geo
+  const double circles   = 3 * pi * hole_radius * hole_radius;
+  const double exact     = length * height - circles;
+  const double angle     = 2 * pi / n;
+  const double predicted = circles * (1 - std::sin(angle) / angle);
+  const double measured  = area(tria) - exact;
+  EXPECT_NEAR(measured, predicted, 1e-9 * length * height) << "N = " << n;
+  EXPECT_LT(std::abs(measured), 1e-3 * length * height);
+}
+
+TEST(GlobalMesh, BoundaryIds)
+{
+  EXPECT_NO_THROW(require_boundary_ids(mesh(holes_geo), {1, 2, 3, 4, 5}));
+  EXPECT_NO_THROW(require_boundary_ids(mesh(beam_geo), {1, 2, 3, 4}));
+  EXPECT_EQ(n_boundary_faces(mesh(beam_geo), 5), 0u);
+  for (const auto &cell : mesh(beam_geo).active_cell_iterators())
+    for (const auto &face : cell->face_iterators())
+      if (face->at_boundary())
+        {
+          const auto   c  = face->center();
+          const double tol = 1e-12;
+          const auto   id = face->boundary_id();
+          EXPECT_TRUE((id == 1 && std::abs(c[1]) < tol) ||
+                      (id == 2 && std::abs(c[0] - length) < tol) ||
+                      (id == 3 && std::abs(c[1] - height) < tol) ||
+                      (id == 4 && std::abs(c[0]) < tol))
+            << "boundary id " << id << " at " << c;
+        }
+}
+
+TEST(GlobalMesh, VerticesAtTheSupportsAndTheLoadPoint)
+{
+  for (const std::string &file : {beam_geo, holes_geo})
+    {
+      const auto &tria = mesh(file);
+      for (const pumpd::geometry::Point p : {pumpd::geometry::Point{0.0254, 0.},
+                                             pumpd::geometry::Point{0.4826, 0.},
+                                             pumpd::geometry::Point{0.254, 0.2032}})
+        {
+          unsigned int v = 0;
+          ASSERT_NO_THROW(v = find_vertex(tria, p, 1e-9)) << file << ": " << p.x << ", " << p.y;
+          EXPECT_NEAR(tria.get_vertices()[v][0], p.x, 1e-9);
+          EXPECT_NEAR(tria.get_vertices()[v][1], p.y, 1e-9);
+        }
+    }
+}
+
+TEST(GlobalMesh, CharacteristicLengthOverride)
+{
+  const auto coarse = mesh(beam_geo, 0.016).n_active_cells();
+  const auto fine   = mesh(beam_geo, 0.008).n_active_cells();
+  // The default is h = 0.008.
+  EXPECT_EQ(fine, mesh(beam_geo).n_active_cells());
+  // Halving h gives about four times the cells.
+  EXPECT_GT(fine, 2.5 * coarse);
+  EXPECT_LT(fine, 5.5 * coarse);
+  EXPECT_TRUE(all_quads(mesh(beam_geo, 0.016)));
+}
+
+TEST(GlobalMesh, ReadsMsh)
+{
+  // The same mesh read back from a .msh file.
+  const std::string msh2 = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n"
+                           "$Nodes\n4\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n$EndNodes\n"
+                           "$Elements\n3\n1 3 2 1 1 1 2 3 4\n2 1 2 1 1 1 2\n3 1 2 3 3 3 4\n"
+                           "$EndElements\n";
+  const TemporaryFile      file("square.msh", msh2);
+  dealii::Triangulation<2> tria;
+  read_mesh(file.path(), tria);
+  EXPECT_EQ(tria.n_active_cells(), 1u);
+  EXPECT_NEAR(area(tria), 1., 1e-14);
+  EXPECT_NO_THROW(require_boundary_ids(tria, {1, 3}));
+  EXPECT_TRUE(starts_with(invalid_parameter([&] { require_boundary_ids(tria, {1, 2}); }),
+                          "Mesh boundary id = 2: "));
+}
+
+TEST(GlobalMesh, Errors)
+{
+  dealii::Triangulation<2> tria;
+  std::string              what;
+
+  what = invalid_parameter([&] { read_mesh("/nonexistent/beam.msh", tria); });
+  EXPECT_EQ(what, "Mesh file = /nonexistent/beam.msh: no such file");
+
+  what = invalid_parameter([&] { require_boundary_ids(mesh(beam_geo), {1, 7}); });
+  EXPECT_TRUE(starts_with(what, "Mesh boundary id = 7: ")) << what;
+  what = invalid_parameter([&] { require_boundary_ids(mesh(beam_geo), {5}); });
+  EXPECT_TRUE(starts_with(what, "Mesh boundary id = 5: ")) << what;
+
+  // The centre of the middle hole is no vertex.
+  what = invalid_parameter([&] { find_vertex(mesh(holes_geo), {0.1524, 0.12065}, 1e-9); });
+  EXPECT_TRUE(starts_with(what, "Mesh vertex = (0.1524, 0.12065): ")) << what;
+
+  what = invalid_parameter([&] { read_mesh(beam_geo, tria, -1.); });
+  EXPECT_TRUE(starts_with(what, "Mesh characteristic length = -1: ")) << what;
+
+  const TemporaryFile text("beam.txt", "not a mesh\n");
+  what = invalid_parameter([&] { read_mesh(text.path(), tria); });
+  EXPECT_TRUE(starts_with(what, "Mesh file = " + text.path() + ": must be")) << what;
+
+  const TemporaryFile truncated("truncated.msh",
+                                "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n1 0 0 0\n");
+  what = invalid_parameter([&] { read_mesh(truncated.path(), tria); });
+  EXPECT_TRUE(starts_with(what, "Mesh file = " + truncated.path() + ": not a readable gmsh mesh"))
+    << what;
+}
+
+TEST(GlobalMesh, NonQuadCellsAreRejected)
+{
+  const std::string triangles = "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n"
+                                "$Nodes\n4\n1 0 0 0\n2 1 0 0\n3 1 1 0\n4 0 1 0\n$EndNodes\n"
+                                "$Elements\n2\n1 2 2 1 1 1 2 3\n2 2 2 1 1 1 3 4\n$EndElements\n";
+  const TemporaryFile      file("triangles.msh", triangles);
+  dealii::Triangulation<2> tria;
+  const std::string        what = invalid_parameter([&] { read_mesh(file.path(), tria); });
+  EXPECT_TRUE(starts_with(what, "Mesh file = " + file.path() + ": quadrilateral cells only"))
+    << what;
+  EXPECT_EQ(tria.n_active_cells(), 0u);
+}
+
+TEST(GlobalMesh, GmshErrors)
+{
+  dealii::Triangulation<2> tria;
+
+  const TemporaryFile broken("broken.geo", "Point(1) = {0, 0, 0\n");
+  std::string         what = invalid_parameter([&] { read_mesh(broken.path(), tria); });
+  EXPECT_TRUE(starts_with(what, "Mesh file = " + broken.path() + ": gmsh failed with exit status"))
+    << what;
+
+  const char *old = std::getenv("PUMPD_GMSH");
+  const std::string saved = old != nullptr ? old : "";
+  ::setenv("PUMPD_GMSH", "/nonexistent/gmsh", 1);
+  what = invalid_parameter([&] { read_mesh(beam_geo, tria); });
+  if (old != nullptr)
+    ::setenv("PUMPD_GMSH", saved.c_str(), 1);
+  else
+    ::unsetenv("PUMPD_GMSH");
+  EXPECT_TRUE(starts_with(what, "Mesh file = " + beam_geo + ": ")) << what;
+  EXPECT_NE(what.find("/nonexistent/gmsh"), std::string::npos) << what;
+}
