@@ -101,6 +101,14 @@ namespace pumpd::global
     return impl->displacement(x, side);
   }
 
+  void EnrichedElasticity::prepare_point_evaluation(const std::vector<geometry::Point> &points,
+                                                    const std::vector<int>             &side)
+  {
+    impl->prepare_point_evaluation(points, side);
+  }
+
+  std::vector<geometry::Point> EnrichedElasticity::evaluate_points() const { return impl->evaluate_points(); }
+
   ErrorNorms EnrichedElasticity::errors(const SidedField &exact,
                                         const std::function<std::array<double, 4>(geometry::Point, int)> &grad) const
   {

@@ -111,6 +111,14 @@ namespace pumpd::global
 
     /// u_h at x, on the given side of the crack where x lies on it (slow path: one cell search).
     geometry::Point displacement(geometry::Point x, int side = 1) const;
+
+    /// Prepares u_h at many points (the PD boundary layer): finds each point's cell once and
+    /// builds the sparse interpolation matrix P, so that evaluate_points() is u = P U. side[i]
+    /// (+-1, or empty: +1) decides for a point on the crack; elsewhere the level set does.
+    /// Valid until the next setup(). Throws InvalidParameter for a point outside the mesh.
+    void prepare_point_evaluation(const std::vector<geometry::Point> &points, const std::vector<int> &side = {});
+    /// u_h at the prepared points, in their order.
+    std::vector<geometry::Point> evaluate_points() const;
     /// Errors against an exact displacement and its gradient (rows du_x/dx, du_x/dy, du_y/dx, du_y/dy).
     ErrorNorms errors(const SidedField &exact, const std::function<std::array<double, 4>(geometry::Point, int)> &grad) const;
 

@@ -114,6 +114,8 @@ namespace pumpd::global
                std::vector<dealii::Tensor<2, 2>> &grad) const;
 
     geometry::Point              displacement(geometry::Point x, int side) const;
+    void                         prepare_point_evaluation(const std::vector<Point> &points, const std::vector<int> &side);
+    std::vector<Point>           evaluate_points() const;
     ErrorNorms                   errors(const SidedField &exact,
                                         const std::function<std::array<double, 4>(geometry::Point, int)> &grad) const;
     std::vector<StressIntensity> stress_intensity_factors(double radius_factor) const;
@@ -144,6 +146,13 @@ namespace pumpd::global
     std::vector<std::array<double, 4>>                      node_branch;
     std::vector<CellData>                                   cells;
     unsigned int                                            n_dofs = 0;
+
+    /// Interpolation matrix of the prepared points (CSR, rows 2 i + c).
+    struct PointMatrix
+    {
+      std::vector<unsigned int> row_start, column;
+      std::vector<double>       value;
+    } point_matrix;
 
     dealii::AffineConstraints<double> constraints;
     dealii::SparsityPattern           sparsity;
