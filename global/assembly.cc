@@ -2,7 +2,16 @@
 // a(u, v) = int lambda div u div v + 2 mu eps(u):eps(v) and of the loads, and the direct solve.
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/full_matrix.h>
+#include <deal.II/base/mpi.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/sparse_direct.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+
+#include <Epetra_MultiVector.h>
+#include <Teuchos_ParameterList.hpp>
 
 #include <chrono>
 #include <optional>
@@ -226,15 +235,114 @@ namespace pumpd::global
       }
   }
 
-  SolveReport EnrichedElasticity::Impl::solve()
+  namespace
   {
-    const auto          start = std::chrono::steady_clock::now();
-    SparseDirectUMFPACK direct;
-    direct.initialize(matrix);
-    direct.vmult(solution, rhs);
-    constraints.distribute(solution);
+    /// Rows and columns [begin, end) of a sparse matrix as a matrix of their own.
+    void extract_block(const SparseMatrix<double> &m, unsigned int begin, unsigned int end, SparsityPattern &pattern,
+                       SparseMatrix<double> &block)
+    {
+      DynamicSparsityPattern dsp(end - begin);
+      for (unsigned int i = begin; i < end; ++i)
+        for (auto it = m.begin(i); it != m.end(i); ++it)
+          if (it->column() >= begin && it->column() < end)
+            dsp.add(i - begin, it->column() - begin);
+      pattern.copy_from(dsp);
+      block.reinit(pattern);
+      for (unsigned int i = begin; i < end; ++i)
+        for (auto it = m.begin(i); it != m.end(i); ++it)
+          if (it->column() >= begin && it->column() < end)
+            block.set(i - begin, it->column() - begin, it->value());
+    }
+
+    /// diag(AMG(A_ss), A_ee^-1) applied to a vector ordered [standard | enriched].
+    struct BlockJacobi
+    {
+      const TrilinosWrappers::PreconditionAMG &amg;
+      const SparseDirectUMFPACK               &enriched;
+      unsigned int                             n_standard, n;
+
+      void vmult(Vector<double> &dst, const Vector<double> &src) const
+      {
+        Vector<double> s(n_standard), d(n_standard);
+        for (unsigned int i = 0; i < n_standard; ++i)
+          s(i) = src(i);
+        amg.vmult(d, s);
+        for (unsigned int i = 0; i < n_standard; ++i)
+          dst(i) = d(i);
+        if (n > n_standard)
+          {
+            Vector<double> e(n - n_standard);
+            for (unsigned int i = n_standard; i < n; ++i)
+              e(i - n_standard) = src(i);
+            enriched.solve(e);
+            for (unsigned int i = n_standard; i < n; ++i)
+              dst(i) = e(i - n_standard);
+          }
+      }
+    };
+  } // namespace
+
+  SolveReport EnrichedElasticity::Impl::solve(const SolverSettings &settings_)
+  {
+    const auto  start = std::chrono::steady_clock::now();
     SolveReport report;
-    report.solver  = "UMFPACK";
+    if (settings_.type == SolverSettings::Type::direct)
+      {
+        SparseDirectUMFPACK direct;
+        direct.initialize(matrix);
+        direct.vmult(solution, rhs);
+        report.solver = "UMFPACK";
+      }
+    else
+      {
+        if (!Utilities::MPI::job_supports_mpi())
+          throw std::logic_error("CG + AMG (Trilinos) needs MPI: create a Utilities::MPI::MPI_InitFinalize in main()");
+        // Unknowns are ordered [standard | enriched]. Block-Jacobi preconditioner: AMG on the
+        // standard block (rigid-body near-null space), a direct solve on the enriched block,
+        // whose functions are not smooth and would defeat AMG's coarsening.
+        const unsigned int n_standard = 2 * nodes.size();
+        SparseMatrix<double> standard_block, enriched_block;
+        SparsityPattern      standard_pattern, enriched_pattern;
+        extract_block(matrix, 0, n_standard, standard_pattern, standard_block);
+        extract_block(matrix, n_standard, n_dofs, enriched_pattern, enriched_block);
+
+        TrilinosWrappers::SparseMatrix A;
+        A.reinit(standard_block);
+        Epetra_MultiVector modes(A.trilinos_matrix().DomainMap(), 3);
+        for (unsigned int p = 0; p < nodes.size(); ++p)
+          {
+            const auto &x    = support[nodes[p]];
+            modes[0][2 * p]     = 1.;
+            modes[1][2 * p + 1] = 1.;
+            modes[2][2 * p]     = -x[1];
+            modes[2][2 * p + 1] = x[0];
+          }
+        TrilinosWrappers::PreconditionAMG::AdditionalData data;
+        data.elliptic              = true;
+        data.higher_order_elements = false;
+        data.smoother_sweeps       = 2;
+        data.aggregation_threshold = 0.02;
+        Teuchos::ParameterList              list;
+        std::unique_ptr<Epetra_MultiVector> unused;
+        data.set_parameters(list, unused, A.trilinos_matrix());
+        list.set("null space: type", "pre-computed");
+        list.set("null space: dimension", 3);
+        list.set("null space: vectors", modes.Values());
+        TrilinosWrappers::PreconditionAMG amg;
+        amg.initialize(A.trilinos_matrix(), list);
+        SparseDirectUMFPACK enriched_solver;
+        if (n_dofs > n_standard)
+          enriched_solver.initialize(enriched_block);
+
+        BlockJacobi preconditioner{amg, enriched_solver, n_standard, n_dofs};
+        SolverControl            control(settings_.max_iterations, settings_.tolerance * rhs.l2_norm());
+        SolverCG<Vector<double>> cg(control);
+        solution = 0.;
+        cg.solve(matrix, solution, rhs, preconditioner);
+        report.solver     = "CG + AMG";
+        report.iterations = control.last_step();
+      }
+    constraints.distribute(solution);
     report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return report;
   }

@@ -89,7 +89,7 @@ namespace pumpd::global
 
   void EnrichedElasticity::setup() { impl->setup(); }
   void EnrichedElasticity::assemble() { impl->assemble(); }
-  SolveReport EnrichedElasticity::solve() { return impl->solve(); }
+  SolveReport EnrichedElasticity::solve(const SolverSettings &solver) { return impl->solve(solver); }
 
   unsigned int EnrichedElasticity::n_dofs() const { return impl->n_dofs; }
   unsigned int EnrichedElasticity::n_enriched_dofs() const { return impl->n_dofs - 2 * impl->nodes.size(); }

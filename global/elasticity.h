@@ -58,6 +58,20 @@ namespace pumpd::global
     unsigned int tip_order        = 8;    ///< Gauss / Duffy order where branch functions live
   };
 
+  /// Linear solver: sparse direct (UMFPACK, the default) or conjugate gradients preconditioned by
+  /// algebraic multigrid (Trilinos ML) with the rigid-body modes as near-null space, for large
+  /// meshes. CG + AMG needs MPI to be initialised (Utilities::MPI::MPI_InitFinalize in main()).
+  struct SolverSettings
+  {
+    enum class Type
+    {
+      direct,
+      cg_amg
+    } type                      = Type::direct;
+    double       tolerance      = 1e-10; ///< relative residual of CG
+    unsigned int max_iterations = 10000;
+  };
+
   struct SolveReport
   {
     std::string  solver;
@@ -102,7 +116,7 @@ namespace pumpd::global
     /// does not exist.
     void        setup();
     void        assemble();
-    SolveReport solve();
+    SolveReport solve(const SolverSettings &solver = {});
 
     unsigned int n_dofs() const;
     unsigned int n_enriched_dofs() const;

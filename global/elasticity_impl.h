@@ -95,7 +95,7 @@ namespace pumpd::global
 
     void         setup();
     void         assemble();
-    SolveReport  solve();
+    SolveReport  solve(const SolverSettings &solver);
     unsigned int count(NodeKind k) const;
 
     /// The cell's basis: standard and enriched functions of the nodes its vertices depend on.
