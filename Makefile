@@ -20,7 +20,8 @@ build: configure
 run: build
 	$(BUILD)/coupling/pumpd $(SCENE)
 	@dir=$$(sed -n 's/^ *set Output directory *= *//p' $(SCENE)); \
-	  if [ -f "$$dir/damage.csv" ]; then /usr/bin/python3 scripts/plot_pd_damage.py "$$dir"; fi
+	  if [ -f "$$dir/damage.csv" ]; then /usr/bin/python3 scripts/plot_pd_damage.py "$$dir"; fi; \
+	  if [ -f "$$dir/crack_path.csv" ]; then /usr/bin/python3 scripts/plot_crack_path.py "$$dir"; fi
 
 test: build
 	cd $(BUILD) && ctest -LE "bench|study" --output-on-failure

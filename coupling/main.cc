@@ -10,6 +10,7 @@
 #include <string>
 
 #include "error.h"
+#include "lefm_growth.h"
 #include "parameters.h"
 #include "pd_edge_crack.h"
 
@@ -40,6 +41,14 @@ namespace
         const auto r = pumpd::coupling::run_edge_crack(pumpd::coupling::read_edge_crack(prm), std::cout);
         std::cout << "crack growth onset at K/K_c = " << r.onset_k_over_kc << "; grown crack within "
                   << r.max_offset / r.spacing << " h of the symmetry line\n";
+      }
+    else if (type == "lefm-growth")
+      {
+        const auto r = pumpd::coupling::run_lefm_growth(pumpd::coupling::read_lefm_growth(prm), std::cout);
+        const auto &end = r.path.back();
+        std::cout << "crack path ends at (" << end.x << ", " << end.y << ") after " << r.increments
+                  << " increments, length " << pumpd::geometry::length(r.path) << " m (" << r.stop_reason << "), "
+                  << r.seconds << " s\n";
       }
     return 0;
   }

@@ -1,6 +1,7 @@
 #include "parameters.h"
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/utilities.h>
 
 namespace pumpd::coupling
 {
@@ -21,11 +22,14 @@ namespace pumpd::coupling
   void declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Scene");
-    entry(prm, "Type", "pd-edge-crack", Patterns::Selection("pd-edge-crack"),
+    entry(prm, "Type", "pd-edge-crack", Patterns::Selection("pd-edge-crack|lefm-growth"),
                       "Which scene to run. pd-edge-crack: a PD box around a mode-I edge-crack tip, "
-                      "its boundary layer driven by the Williams field of a rising K.");
+                      "its boundary layer driven by the Williams field of a rising K. lefm-growth: "
+                      "LEFM crack growth in the Ingraffea beam (XFEM, maximum hoop stress; no PD).");
     entry(prm, "Output directory", "out", Patterns::DirectoryName(),
-                      "Where VTU/PVD, load_steps.csv and checkpoint.h5 go (created if missing).");
+                      "Where VTU/PVD, load_steps.csv, checkpoint.h5, crack_path.csv go (created if "
+                      "missing). Relative paths in a scene file (this one, Mesh file, Published path) "
+                      "start at the current directory; make run runs from the repository root.");
     prm.leave_subsection();
 
     prm.enter_subsection("Material");
@@ -66,6 +70,51 @@ namespace pumpd::coupling
                       "Stop the load steps once the crack grew this far [m]; 0 runs all steps.");
     entry(prm, "Output interval", "1", Patterns::Integer(1), "Write the PD state every n load steps.");
     prm.leave_subsection();
+
+    const auto point = Patterns::List(Patterns::Double(), 2, 2, ",");
+    prm.enter_subsection("LEFM growth");
+    entry(prm, "Mesh file", "meshes/ingraffea-beam.geo", Patterns::FileName(),
+                      "The beam: gmsh .geo (meshed by gmsh) or .msh, all quadrilaterals; boundary ids "
+                      "1-4 on the outline (a rectangle), 5 on the holes. Relative to the current directory.");
+    entry(prm, "Mesh size", "0.008", Patterns::Double(0., 1.),
+                      "h passed to gmsh for a .geo [m], in [0, 1]; 0: the file's default. "
+                      "meshes/ingraffea-beam*.geo: cells of h, h/2 in the crack band.");
+    entry(prm, "Initial crack", "0.1016,0; 0.1016,0.0254", Patterns::List(point, 2, Patterns::List::max_int_value, ";"),
+                      "Crack polyline \"x1,y1; x2,y2; ...\" [m], at least 2 points inside the body; an end "
+                      "on the outline is the mouth, the other ends are tips. Ingraffea Cases I, II: "
+                      "0.1016,0; 0.1016,0.0254; Case III: 0.127,0; 0.127,0.0381.");
+    entry(prm, "Poisson's ratio", "0.35", Patterns::Double(0., 0.5),
+                      "nu of the linear elastic body, in [0, 0.5) (PMMA: 0.35). Plane strain or stress "
+                      "and Young's modulus from the Material subsection.");
+    entry(prm, "Pin support", "0.0254,0", point, "x,y [m] of the mesh vertex with both displacements fixed.");
+    entry(prm, "Roller support", "0.4826,0", point, "x,y [m] of the mesh vertex with the vertical displacement fixed.");
+    entry(prm, "Load point", "0.254,0.2032", point, "x,y [m] of the mesh vertex where the point load acts (downwards).");
+    entry(prm, "Load", "1e5", Patterns::Double(0.),
+                      "Point load [N per m of thickness], > 0. K scales with it; the LEFM growth direction "
+                      "does not depend on it.");
+    entry(prm, "Growth increment", "0.004", Patterns::Double(0.), "Crack advance da per step [m], > 0.");
+    entry(prm, "Increment halving angle", "0", Patterns::Double(0., 90.),
+                      "Adaptive increment: da / (1 + |theta_c| / this) for the kink angle theta_c [deg], in "
+                      "[0, 90]; 0: every increment is da.");
+    entry(prm, "Maximum steps", "100", Patterns::Integer(1), "Growth increments at most, >= 1.");
+    entry(prm, "Maximum crack length", "0.3", Patterns::Double(0.),
+                      "Stop when the crack polyline is this long [m], > 0.");
+    entry(prm, "Tip enrichment radius", "0.01", Patterns::Double(0.),
+                      "Nodes within this distance of a tip carry the branch functions [m]; at least the "
+                      "diameter of the cell at the tip (default mesh: 2.5 band cells). The interaction "
+                      "integral uses the same radius.");
+    entry(prm, "Refinement levels near the tip", "1", Patterns::Integer(0, 6),
+                      "Cells near a tip are refined to this level (each level halves them), in [0, 6]; "
+                      "the refinement stays along the path.");
+    entry(prm, "Refinement radius", "0.012", Patterns::Double(0.), "Refine the cells within this distance of a tip [m], > 0.");
+    entry(prm, "Hole margin", "0.001", Patterns::Double(0., 1.),
+                      "A tip that would enter a hole stops this far [m] from the hole's circle, in [0, 1].");
+    entry(prm, "Output interval", "5", Patterns::Integer(1), "Write global_NNN.vtu every n steps (and the last), >= 1.");
+    entry(prm, "Published path", "", Patterns::Anything(),
+                      "Optional CSV of a reference crack path (x,y [m] per line, # comments), copied to "
+                      "reference_path.csv and compared (the largest distance of its points from our path); "
+                      "empty: none. Relative to the current directory.");
+    prm.leave_subsection();
   }
 
   std::string scene_type(ParameterHandler &prm)
@@ -82,6 +131,47 @@ namespace pumpd::coupling
     const std::string d = prm.get("Output directory");
     prm.leave_subsection();
     return d;
+  }
+
+  namespace
+  {
+    geometry::Point to_point(const std::string &text)
+    {
+      const auto xy = dealii::Utilities::split_string_list(text, ',');
+      return {dealii::Utilities::string_to_double(xy[0]), dealii::Utilities::string_to_double(xy[1])};
+    }
+  } // namespace
+
+  LefmGrowthParameters read_lefm_growth(ParameterHandler &prm)
+  {
+    LefmGrowthParameters p;
+    p.output_directory = output_directory(prm);
+    prm.enter_subsection("Material");
+    p.youngs_modulus = prm.get_double("Young's modulus");
+    p.plane_strain   = prm.get_bool("Plane strain");
+    prm.leave_subsection();
+    prm.enter_subsection("LEFM growth");
+    p.mesh_file = prm.get("Mesh file");
+    p.mesh_size = prm.get_double("Mesh size");
+    for (const auto &point : dealii::Utilities::split_string_list(prm.get("Initial crack"), ';'))
+      p.initial_crack.push_back(to_point(point));
+    p.poisson_ratio     = prm.get_double("Poisson's ratio");
+    p.pin               = to_point(prm.get("Pin support"));
+    p.roller            = to_point(prm.get("Roller support"));
+    p.load_point        = to_point(prm.get("Load point"));
+    p.load              = prm.get_double("Load");
+    p.growth_increment  = prm.get_double("Growth increment");
+    p.halving_angle     = prm.get_double("Increment halving angle");
+    p.max_steps         = prm.get_integer("Maximum steps");
+    p.max_crack_length  = prm.get_double("Maximum crack length");
+    p.tip_radius        = prm.get_double("Tip enrichment radius");
+    p.refinement_levels = prm.get_integer("Refinement levels near the tip");
+    p.refinement_radius = prm.get_double("Refinement radius");
+    p.hole_margin       = prm.get_double("Hole margin");
+    p.output_interval   = prm.get_integer("Output interval");
+    p.published_path    = prm.get("Published path");
+    prm.leave_subsection();
+    return p;
   }
 
   EdgeCrackParameters read_edge_crack(ParameterHandler &prm)

@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "lefm_growth.h"
 #include "pd_edge_crack.h"
 
 namespace dealii
@@ -20,5 +21,6 @@ namespace pumpd::coupling
   /// "Scene/Output directory".
   std::string output_directory(dealii::ParameterHandler &prm);
 
-  EdgeCrackParameters read_edge_crack(dealii::ParameterHandler &prm);
+  EdgeCrackParameters  read_edge_crack(dealii::ParameterHandler &prm);
+  LefmGrowthParameters read_lefm_growth(dealii::ParameterHandler &prm);
 } // namespace pumpd::coupling

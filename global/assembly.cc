@@ -44,7 +44,7 @@ namespace pumpd::global
             else if (fn.kind > 0)
               {
                 if (!branch[fn.tip])
-                  branch[fn.tip] = crack->branch_functions(to_point(fv.quadrature_point(q)), fn.tip);
+                  branch[fn.tip] = branch_on_side(*crack, to_point(fv.quadrature_point(q)), fn.tip, side[q]);
                 g           = branch[fn.tip]->value[fn.kind - 1] - fn.shift;
                 const auto d = branch[fn.tip]->gradient[fn.kind - 1];
                 grad_psi[0] = d.x;

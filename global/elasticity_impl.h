@@ -160,6 +160,21 @@ namespace pumpd::global
     dealii::Vector<double>            rhs, solution;
   };
 
+  /// Branch functions at x on the given side of the crack. Off the crack the level set decides
+  /// and `side` agrees with it; on a face, the other side's values come from theta -> -theta,
+  /// which flips F1 and F4 (odd in theta) and keeps F2 and F3.
+  inline BranchValues branch_on_side(const Crack &crack, Point x, unsigned int tip, int side)
+  {
+    BranchValues b = crack.branch_functions(x, tip);
+    if (crack.side(x) != side)
+      for (int j : {0, 3})
+        {
+          b.value[j]    = -b.value[j];
+          b.gradient[j] = -1. * b.gradient[j];
+        }
+    return b;
+  }
+
   inline Point to_point(const dealii::Point<2> &p) { return {p[0], p[1]}; }
   inline dealii::Point<2> to_dealii(const Point &p) { return dealii::Point<2>(p.x, p.y); }
 } // namespace pumpd::global

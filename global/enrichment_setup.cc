@@ -68,14 +68,23 @@ namespace pumpd::global
       return true;
     }
 
-    double distance_to_polygon(Point x, const std::array<Point, 4> &poly)
+    /// The point of the cell's boundary nearest to x (x outside the cell).
+    Point nearest_on_polygon(Point x, const std::array<Point, 4> &poly)
     {
-      if (inside(x, poly, 0.))
-        return 0.;
+      Point  best;
       double d = 1e300;
       for (std::size_t e = 0; e < 4; ++e)
-        d = std::min(d, geometry::distance_to_segment(x, poly[e], poly[(e + 1) % 4]));
-      return d;
+        {
+          const Point  a = poly[e], ab = poly[(e + 1) % 4] - a;
+          const double t = std::clamp(dot(x - a, ab) / dot(ab, ab), 0., 1.);
+          const Point  p = a + t * ab;
+          if (geometry::norm(x - p) < d)
+            {
+              d    = geometry::norm(x - p);
+              best = p;
+            }
+        }
+      return best;
     }
 
     RefPoint to_unit(const MappingQ1<2> &mapping, const Cell &cell, Point x)
@@ -166,8 +175,12 @@ namespace pumpd::global
             for (const auto &t : crack->tips())
               if (inside(t.position, poly, 1e-12))
                 tips.push_back(to_unit(mapping, cell, t.position));
-              else if (distance_to_polygon(t.position, poly) < cell->diameter())
-                near_tips.push_back(to_unit(mapping, cell, t.position));
+              else
+                {
+                  const Point nearest = nearest_on_polygon(t.position, poly);
+                  if (geometry::norm(t.position - nearest) < cell->diameter())
+                    near_tips.push_back(to_unit(mapping, cell, nearest));
+                }
             data.cut     = !pieces.empty();
             data.has_tip = !tips.empty();
             data.side    = crack->side(to_point(cell->center()));

@@ -57,11 +57,8 @@ namespace pumpd::global
             else if (fn.kind > 0)
               {
                 if (!branch[fn.tip])
-                  branch[fn.tip] = crack->branch_functions(points[i], fn.tip);
-                // The branch functions' own side is the level set's; on the crack use the hint.
-                const double value = branch[fn.tip]->value[fn.kind - 1];
-                const bool   odd   = fn.kind == 1 || fn.kind == 4; // F1, F4 change sign with theta
-                g = (odd && crack->side(points[i]) != side ? -value : value) - fn.shift;
+                  branch[fn.tip] = branch_on_side(*crack, points[i], fn.tip, side);
+                g = branch[fn.tip]->value[fn.kind - 1] - fn.shift;
               }
             double phi = 0.;
             for (unsigned int v = 0; v < 4; ++v)

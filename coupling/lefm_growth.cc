@@ -1,0 +1,472 @@
+#include "lefm_growth.h"
+
+#include <deal.II/grid/tria.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <map>
+#include <memory>
+#include <numeric>
+#include <optional>
+#include <ostream>
+#include <sstream>
+
+#include "elasticity.h"
+#include "error.h"
+#include "mesh.h"
+
+namespace pumpd::coupling
+{
+  using geometry::Point;
+
+  namespace
+  {
+    constexpr double pi             = 3.14159265358979323846;
+    constexpr double infinity       = std::numeric_limits<double>::infinity();
+    constexpr double crack_tolerance = 1e-9;  ///< [m]: "on the outline", "touches a hole"
+    constexpr double vertex_tolerance = 1e-6; ///< [m]: supports and load on mesh vertices
+    /// A tip that would end within (look_ahead - 1) da of the outline or a hole's margin goes
+    /// there in this step: no sliver of material (and no tiny cell cut) is left in front of it.
+    constexpr double look_ahead = 1.5;
+
+    std::string to_text(Point p)
+    {
+      std::ostringstream s;
+      s << "(" << p.x << ", " << p.y << ")";
+      return s.str();
+    }
+
+    std::string to_text(const geometry::Polyline &line)
+    {
+      std::ostringstream s;
+      for (std::size_t k = 0; k < line.size(); ++k)
+        s << (k == 0 ? "" : "; ") << line[k].x << "," << line[k].y;
+      return s.str();
+    }
+
+    void validate(const LefmGrowthParameters &p)
+    {
+      require_range("Mesh size", p.mesh_size, 0., 1., "must be in [0, 1] m (0: the mesh file's default)");
+      require_positive("Load", p.load);
+      require_positive("Growth increment", p.growth_increment);
+      require_range("Increment halving angle", p.halving_angle, 0., 90., "must be in [0, 90] degrees (0: fixed increment)");
+      if (p.max_steps < 1)
+        throw InvalidParameter("Maximum steps", "0", "must be >= 1");
+      require_positive("Maximum crack length", p.max_crack_length);
+      require_positive("Tip enrichment radius", p.tip_radius);
+      require_range("Refinement levels near the tip", p.refinement_levels, 0, 6, "must be in [0, 6]");
+      require_positive("Refinement radius", p.refinement_radius);
+      require_range("Hole margin", p.hole_margin, 0., 1., "must be in [0, 1] m");
+      if (p.output_interval < 1)
+        throw InvalidParameter("Output interval", "0", "must be >= 1");
+      if (p.initial_crack.size() < 2)
+        throw InvalidParameter("Initial crack", to_text(p.initial_crack), "needs at least 2 points");
+    }
+
+    /// The body of the mesh: the bounding box as outline, and each connected ring of faces with
+    /// boundary id 5 (meshes/*.geo: holes) as the circle about its vertices' centroid through the
+    /// farthest of them (the mesh's hole is a polygon inscribed in that circle).
+    geometry::Body body_of(const dealii::Triangulation<2> &tria)
+    {
+      const auto &v = tria.get_vertices();
+      geometry::Body body{{infinity, infinity, -infinity, -infinity}, {}};
+      for (unsigned int i = 0; i < v.size(); ++i)
+        if (tria.get_used_vertices()[i])
+          {
+            body.outline.x_min = std::min(body.outline.x_min, v[i][0]);
+            body.outline.y_min = std::min(body.outline.y_min, v[i][1]);
+            body.outline.x_max = std::max(body.outline.x_max, v[i][0]);
+            body.outline.y_max = std::max(body.outline.y_max, v[i][1]);
+          }
+      // Union-find over the vertices of hole faces.
+      std::map<unsigned int, unsigned int> parent;
+      const auto root = [&](unsigned int a) {
+        while (parent[a] != a)
+          a = parent[a] = parent[parent[a]];
+        return a;
+      };
+      for (const auto &cell : tria.active_cell_iterators())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary() && face->boundary_id() == 5)
+            {
+              const unsigned int a = face->vertex_index(0), b = face->vertex_index(1);
+              parent.emplace(a, a);
+              parent.emplace(b, b);
+              parent[root(a)] = root(b);
+            }
+      std::map<unsigned int, std::vector<Point>> rings;
+      for (const auto &[i, unused] : parent)
+        rings[root(i)].push_back({v[i][0], v[i][1]});
+      for (const auto &[r, points] : rings)
+        {
+          Point c = std::accumulate(points.begin(), points.end(), Point{});
+          c       = (1. / points.size()) * c;
+          double radius = 0.;
+          for (const auto &p : points)
+            radius = std::max(radius, geometry::norm(p - c));
+          body.holes.push_back({c, radius});
+        }
+      return body;
+    }
+
+    /// The cells within `radius` of a tip are refined until they reach `levels` (the mesh file's
+    /// cells are level 0): along a growing crack the mesh is refined once, never coarsened.
+    void refine_at_tips(dealii::Triangulation<2> &tria, const std::vector<global::Tip> &tips, double radius,
+                        unsigned int levels)
+    {
+      for (unsigned int l = 0; l < levels; ++l)
+        {
+          bool flagged = false;
+          for (const auto &cell : tria.active_cell_iterators())
+            for (const auto &t : tips)
+              if (cell->level() < int(levels) &&
+                  cell->center().distance(dealii::Point<2>(t.position.x, t.position.y)) < radius + 0.5 * cell->diameter())
+                {
+                  cell->set_refine_flag();
+                  flagged = true;
+                }
+          if (!flagged)
+            return;
+          tria.execute_coarsening_and_refinement();
+        }
+    }
+
+    /// Distance along the unit ray x + t e, t >= 0, from x inside the box to its boundary.
+    double distance_to_outline(Point x, Point e, const geometry::Box &b)
+    {
+      double t = infinity;
+      if (e.x > 0.)
+        t = std::min(t, (b.x_max - x.x) / e.x);
+      if (e.x < 0.)
+        t = std::min(t, (b.x_min - x.x) / e.x);
+      if (e.y > 0.)
+        t = std::min(t, (b.y_max - x.y) / e.y);
+      if (e.y < 0.)
+        t = std::min(t, (b.y_min - x.y) / e.y);
+      return std::max(t, 0.);
+    }
+
+    /// First t >= 0 with |x + t e - c| = R for the unit e (0 if x is inside the circle, infinity
+    /// if the ray misses it): t = -b - sqrt(b^2 - |x - c|^2 + R^2), b = (x - c).e.
+    double distance_to_circle(Point x, Point e, Point c, double R)
+    {
+      const double b = geometry::dot(x - c, e), q = geometry::dot(x - c, x - c) - R * R;
+      if (q <= 0.)
+        return 0.;
+      if (b >= 0. || b * b < q)
+        return infinity;
+      return -b - std::sqrt(b * b - q);
+    }
+
+    /// Reference path (x, y per line; lines starting with '#' or a letter are skipped).
+    geometry::Polyline read_path(const std::string &file)
+    {
+      std::ifstream in(file);
+      if (!in)
+        throw InvalidParameter("Published path", file, "cannot be opened (relative paths start at the current directory)");
+      geometry::Polyline path;
+      std::string        line;
+      while (std::getline(in, line))
+        {
+          if (line.empty() || line[0] == '#' || std::isalpha(static_cast<unsigned char>(line[0])))
+            continue;
+          Point p;
+          if (std::sscanf(line.c_str(), "%lf,%lf", &p.x, &p.y) != 2)
+            throw InvalidParameter("Published path", file, "line \"" + line + "\" is not x,y");
+          path.push_back(p);
+        }
+      if (path.size() < 2)
+        throw InvalidParameter("Published path", file, "needs at least 2 points x,y");
+      return path;
+    }
+
+    /// Largest distance of a vertex of `reference` from the polyline `path`.
+    double deviation(const geometry::Polyline &path, const geometry::Polyline &reference)
+    {
+      double worst = 0.;
+      for (const auto &x : reference)
+        {
+          double d = infinity;
+          for (std::size_t k = 0; k + 1 < path.size(); ++k)
+            d = std::min(d, geometry::distance_to_segment(x, path[k], path[k + 1]));
+          worst = std::max(worst, d);
+        }
+      return worst;
+    }
+
+    void write_path(const std::string &file, const geometry::Polyline &path)
+    {
+      std::ofstream out(file);
+      out << std::setprecision(10) << "x_m,y_m\n";
+      for (const auto &p : path)
+        out << p.x << "," << p.y << "\n";
+    }
+
+    /// body.csv for scripts/plot_crack_path.py: outline and holes as bounding boxes (a hole is
+    /// the circle inscribed in its box), pin, roller and load as points (min = max).
+    void write_body(const std::string &file, const geometry::Body &body, const LefmGrowthParameters &p)
+    {
+      std::ofstream out(file);
+      out << std::setprecision(10) << "shape,x_min_m,y_min_m,x_max_m,y_max_m\n";
+      const auto &o = body.outline;
+      out << "outline," << o.x_min << "," << o.y_min << "," << o.x_max << "," << o.y_max << "\n";
+      for (const auto &h : body.holes)
+        out << "hole," << h.centre.x - h.radius << "," << h.centre.y - h.radius << "," << h.centre.x + h.radius
+            << "," << h.centre.y + h.radius << "\n";
+      for (const auto &[name, x] : {std::pair{"pin", p.pin}, {"roller", p.roller}, {"load", p.load_point}})
+        out << name << "," << x.x << "," << x.y << "," << x.x << "," << x.y << "\n";
+    }
+
+    /// A growing series of global_NNN.vtu, indexed by global.pvd (rewritten at each add).
+    class VtuSeries
+    {
+    public:
+      explicit VtuSeries(std::string dir)
+        : directory(std::move(dir))
+      {}
+
+      void add(const global::EnrichedElasticity &solution, std::size_t step)
+      {
+        char name[32];
+        std::snprintf(name, sizeof(name), "global_%03zu.vtu", step);
+        solution.write_vtu(directory + "/" + name);
+        entries.emplace_back(step, name);
+        std::ofstream pvd(directory + "/global.pvd");
+        pvd << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
+        for (const auto &[s, file] : entries)
+          pvd << "<DataSet timestep=\"" << s << "\" file=\"" << file << "\"/>\n";
+        pvd << "</Collection>\n</VTKFile>\n";
+      }
+
+    private:
+      std::string                                     directory;
+      std::vector<std::pair<std::size_t, std::string>> entries;
+    };
+
+    /// What happens to one tip in one step.
+    struct Growth
+    {
+      std::size_t tip = 0;
+      Point       to;           ///< new tip position
+      double      angle = 0.;   ///< theta_c [rad]
+      bool        grow  = true; ///< false: no new segment
+      bool        stops = false;
+      std::string reason;
+    };
+
+    /// Where tip grows by the increment da / (1 + |theta_c| / halving angle), at most `remaining`:
+    /// tip + da e, e = cos(theta_c) d + sin(theta_c) n; to the outline or to a hole's margin
+    /// instead (and it stops) if that comes within look_ahead da along e; nowhere if K_I <= 0.
+    void plan(Growth &g, const global::Tip &tip, double k1, double remaining, const geometry::Body &body,
+              const LefmGrowthParameters &p)
+    {
+      if (k1 <= 0.)
+        {
+          g.grow   = false;
+          g.stops  = true;
+          g.reason = "closed (K_I <= 0)";
+          return;
+        }
+      double da = p.growth_increment;
+      if (p.halving_angle > 0.)
+        da /= 1. + std::abs(g.angle) * 180. / pi / p.halving_angle;
+      da                 = std::min(da, remaining);
+      const Point  n     = {-tip.direction.y, tip.direction.x};
+      const Point  e     = std::cos(g.angle) * tip.direction + std::sin(g.angle) * n;
+      const double t_out = distance_to_outline(tip.position, e, body.outline);
+      double       t_hole = infinity;
+      for (const auto &h : body.holes)
+        t_hole = std::min(t_hole, distance_to_circle(tip.position, e, h.centre, h.radius + p.hole_margin));
+      if (t_hole <= look_ahead * da && t_hole < t_out)
+        {
+          g.grow   = t_hole > 1e-3 * da;
+          g.to     = tip.position + t_hole * e;
+          g.stops  = true;
+          g.reason = "stopped before a hole";
+        }
+      else if (t_out <= look_ahead * da)
+        {
+          g.to     = tip.position + t_out * e;
+          g.stops  = true;
+          g.reason = "reached the outline";
+        }
+      else
+        g.to = tip.position + da * e;
+    }
+  } // namespace
+
+  double kink_angle(double k1, double k2)
+  {
+    const double s = k1 + std::sqrt(k1 * k1 + 8. * k2 * k2);
+    if (k2 == 0. || s == 0.)
+      return 0.;
+    return -2. * std::atan(2. * k2 / s);
+  }
+
+  LefmGrowthResult run_lefm_growth(const LefmGrowthParameters &p, std::ostream &out)
+  {
+    validate(p);
+    const auto t0 = std::chrono::steady_clock::now();
+    const geometry::Polyline reference = p.published_path.empty() ? geometry::Polyline{} : read_path(p.published_path);
+
+    dealii::Triangulation<2> tria;
+    global::read_mesh(p.mesh_file, tria, p.mesh_size);
+    global::require_boundary_ids(tria, {1, 2, 3, 4});
+    const geometry::Body body = body_of(tria);
+    for (const auto &[name, x] : {std::pair{"Pin support", p.pin}, {"Roller support", p.roller}, {"Load point", p.load_point}})
+      try
+        {
+          global::find_vertex(tria, x, vertex_tolerance);
+        }
+      catch (const InvalidParameter &e)
+        {
+          throw InvalidParameter(name, to_text(x), e.what());
+        }
+    std::optional<global::Crack> crack;
+    try
+      {
+        crack.emplace(p.initial_crack, body, crack_tolerance);
+      }
+    catch (const InvalidParameter &e)
+      {
+        throw InvalidParameter("Initial crack", to_text(p.initial_crack), e.what());
+      }
+
+    global::ElasticMaterial material{p.youngs_modulus, p.poisson_ratio, p.plane_strain};
+    global::EnrichmentSettings enrichment;
+    enrichment.tip_radius = p.tip_radius;
+    global::EnrichedElasticity problem(tria, material, enrichment);
+    problem.add_dirichlet_vertex(p.pin, {0., 0.}, true, true);
+    problem.add_dirichlet_vertex(p.roller, {0., 0.}, false, true);
+    problem.add_point_load(p.load_point, {0., -p.load});
+
+    std::unique_ptr<VtuSeries> series;
+    std::ofstream              table;
+    if (!p.output_directory.empty())
+      {
+        std::filesystem::create_directories(p.output_directory);
+        series = std::make_unique<VtuSeries>(p.output_directory);
+        write_body(p.output_directory + "/body.csv", body, p);
+        if (!reference.empty())
+          write_path(p.output_directory + "/reference_path.csv", reference);
+        table.open(p.output_directory + "/load_steps.csv");
+        table << "step,tip,x_m,y_m,crack_length_m,K_I_Pa_sqrt_m,K_II_Pa_sqrt_m,kink_angle_deg,increment_m,dofs,"
+                 "solve_seconds,step_seconds\n";
+      }
+    out << "LEFM growth: " << p.mesh_file << ", " << tria.n_active_cells() << " cells, " << body.holes.size()
+        << " holes, initial crack " << crack->length() << " m, da = " << p.growth_increment << " m, up to "
+        << p.max_steps << " steps or " << p.max_crack_length << " m\n";
+
+    LefmGrowthResult     result;
+    bool                 stopped[2] = {false, false}; // [1]: the tip at the first vertex, [0]: at the last
+    for (std::size_t step = 0;; ++step)
+      {
+        const auto t_step = std::chrono::steady_clock::now();
+        refine_at_tips(tria, crack->tips(), p.refinement_radius, p.refinement_levels);
+        problem.set_crack(crack);
+        problem.setup();
+        problem.assemble();
+        const auto solve = problem.solve();
+        const auto sifs  = problem.stress_intensity_factors();
+
+        // Decide every tip from this solution.
+        const double        length    = crack->length();
+        const double        remaining = p.max_crack_length - length;
+        const bool          at_limit  = step == p.max_steps || remaining <= 1e-6 * p.growth_increment;
+        std::vector<Growth> growth;
+        for (std::size_t t = 0; t < sifs.size(); ++t)
+          {
+            const auto &tip = crack->tips()[t];
+            Growth      g;
+            g.tip   = t;
+            g.to    = tip.position;
+            g.angle = kink_angle(sifs[t].k1, sifs[t].k2);
+            if (at_limit || stopped[tip.vertex == 0])
+              g.grow = false;
+            else
+              plan(g, tip, sifs[t].k1, remaining, body, p);
+            growth.push_back(g);
+          }
+        const bool last = at_limit || std::all_of(growth.begin(), growth.end(), [&](const Growth &g) {
+                            return g.stops || stopped[crack->tips()[g.tip].vertex == 0];
+                          });
+
+        const double step_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_step).count();
+        const double elapsed      = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        const double steps_left   = std::min(double(p.max_steps - step), std::ceil(remaining / p.growth_increment));
+        const double eta          = last ? 0. : elapsed / double(step + 1) * steps_left;
+        for (const auto &g : growth)
+          {
+            const LefmGrowthStep s{step, g.tip, sifs[g.tip].tip, length, sifs[g.tip].k1, sifs[g.tip].k2, g.angle,
+                                   g.grow ? geometry::norm(g.to - sifs[g.tip].tip) : 0., problem.n_dofs(), solve.seconds};
+            result.steps.push_back(s);
+            out << "step " << std::setw(3) << step << "/" << p.max_steps << "  tip " << g.tip << " at "
+                << to_text(s.position) << "  crack " << std::setprecision(4) << length << " m  K_I " << s.k1
+                << "  K_II " << s.k2 << "  kink " << std::fixed << std::setprecision(2) << s.kink_angle * 180. / pi
+                << " deg  da " << std::defaultfloat << std::setprecision(3) << s.increment << " m  dofs " << s.dofs
+                << "  " << std::setprecision(2) << step_seconds << " s  ETA " << std::fixed << std::setprecision(0)
+                << eta << " s" << std::defaultfloat << std::setprecision(6) << "\n";
+            if (table)
+              table << std::setprecision(10) << step << "," << g.tip << "," << s.position.x << "," << s.position.y
+                    << "," << length << "," << s.k1 << "," << s.k2 << "," << s.kink_angle * 180. / pi << ","
+                    << s.increment << "," << s.dofs << "," << s.solve_seconds << "," << step_seconds << "\n";
+          }
+        if (series && (step % p.output_interval == 0 || last))
+          series->add(problem, step);
+
+        // Grow from the last tip to the first: a tip that reaches the outline disappears, and the
+        // indices of the tips before it stay valid.
+        for (auto g = growth.rbegin(); g != growth.rend(); ++g)
+          {
+            const bool front = crack->tips()[g->tip].vertex == 0;
+            if (g->grow)
+              try
+                {
+                  crack->grow(g->tip, g->to);
+                }
+              catch (const InvalidParameter &e)
+                {
+                  g->stops  = true;
+                  g->reason = std::string("cannot grow: ") + e.what();
+                }
+            if (g->stops)
+              {
+                stopped[front] = true;
+                out << "  tip " << g->tip << " " << g->reason << " at " << to_text(g->to) << "\n";
+                result.stop_reason += (result.stop_reason.empty() ? "" : "; ") + g->reason;
+              }
+          }
+        if (crack->length() > length)
+          ++result.increments;
+        if (!p.output_directory.empty())
+          write_path(p.output_directory + "/crack_path.csv", crack->vertices());
+
+        const bool growing = std::any_of(crack->tips().begin(), crack->tips().end(),
+                                         [&](const global::Tip &t) { return !stopped[t.vertex == 0]; });
+        if (last || !growing)
+          {
+            const std::string end = step == p.max_steps   ? "maximum steps"
+                                    : at_limit             ? "maximum crack length"
+                                    : crack->tips().empty() ? "the crack cut the body through"
+                                                            : "no tip grows";
+            result.stop_reason += (result.stop_reason.empty() ? "" : "; ") + end;
+            break;
+          }
+      }
+    result.path    = crack->vertices();
+    result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    if (!reference.empty())
+      {
+        result.published_deviation = deviation(result.path, reference);
+        out << "pumpd-metric lefm.published_path_max_deviation_m " << result.published_deviation << "\n";
+      }
+    return result;
+  }
+} // namespace pumpd::coupling

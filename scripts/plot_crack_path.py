@@ -1,0 +1,57 @@
+#!/usr/bin/python3
+"""Crack path of a lefm-growth run as a PNG: scripts/plot_crack_path.py <output dir> -> <dir>/crack_path.png.
+
+Reads what the scene wrote into the directory: crack_path.csv (our path), body.csv (outline,
+holes, supports, load point) and, where the scene had a published path, reference_path.csv.
+Run it with /usr/bin/python3 (Debian's python3-matplotlib).
+"""
+import csv
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.patches import Circle, Rectangle  # noqa: E402
+
+
+def path(file):
+    with open(file) as f:
+        rows = list(csv.DictReader(f))
+    return [1e3 * float(r["x_m"]) for r in rows], [1e3 * float(r["y_m"]) for r in rows]
+
+
+directory = sys.argv[1]
+with open(f"{directory}/body.csv") as f:
+    body = [(r["shape"], *(1e3 * float(r[k]) for k in ("x_min_m", "y_min_m", "x_max_m", "y_max_m")))
+            for r in csv.DictReader(f)]
+
+fig, ax = plt.subplots(figsize=(9, 4.4))
+for shape, x0, y0, x1, y1 in body:
+    if shape == "outline":
+        ax.add_patch(Rectangle((x0, y0), x1 - x0, y1 - y0, fill=False, color="black", lw=1))
+    elif shape == "hole":
+        ax.add_patch(Circle((0.5 * (x0 + x1), 0.5 * (y0 + y1)), 0.5 * (x1 - x0), fill=False, color="black", lw=1))
+    elif shape in ("pin", "roller"):
+        ax.plot(x0, y0, "^", color="dimgray", ms=9, label="supports" if shape == "pin" else None)
+    elif shape == "load":
+        ax.annotate("", xy=(x0, y0), xytext=(x0, y0 + 18), arrowprops=dict(arrowstyle="->", color="dimgray", lw=1.5))
+
+reference = f"{directory}/reference_path.csv"
+if os.path.exists(reference):
+    ax.plot(*path(reference), color="tab:blue", lw=1.2, label="published PUM-PD path")
+x, y = path(f"{directory}/crack_path.csv")
+ax.plot(x, y, color="tab:red", lw=1.6, marker=".", ms=3, label="LEFM (maximum hoop stress)")
+ax.plot(x[-1], y[-1], "o", color="tab:red", ms=5)
+
+ax.set_aspect("equal")
+ax.set_xlabel("x [mm]")
+ax.set_ylabel("y [mm]")
+ax.set_title(f"{os.path.basename(os.path.normpath(directory))}: crack path, end ({x[-1]:.1f}, {y[-1]:.1f}) mm")
+ax.legend(loc="upper right", fontsize=8)
+ax.autoscale_view()
+ax.set_ylim(-8, max(y0 for _, _, _, _, y0 in body) + 25)
+fig.tight_layout()
+fig.savefig(f"{directory}/crack_path.png", dpi=130)
+print(f"wrote {directory}/crack_path.png")
