@@ -373,7 +373,10 @@ namespace pumpd::coupling
         problem.set_crack(crack);
         problem.setup();
         problem.assemble();
-        const auto solve = problem.solve();
+        global::SolverSettings solver;
+        if (p.iterative_solver)
+          solver.type = global::SolverSettings::Type::cg_amg;
+        const auto solve = problem.solve(solver);
         const auto sifs  = problem.stress_intensity_factors();
 
         // Decide every tip from this solution.

@@ -49,6 +49,7 @@ namespace pumpd::coupling
     std::string        output_directory;           ///< "" = no files
     std::size_t        output_interval = 5;        ///< global_NNN.vtu every n steps
     std::string        published_path;             ///< CSV x,y of a reference path; "" = none
+    bool               iterative_solver = false;   ///< CG + AMG instead of UMFPACK
   };
 
   /// One tip at one solved step.

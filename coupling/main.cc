@@ -3,6 +3,7 @@
 //   pumpd --print-parameters   every parameter with default, allowed range and documentation
 //   pumpd --help
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
 #include <iostream>
@@ -56,6 +57,8 @@ namespace
 
 int main(int argc, char **argv)
 {
+  // MPI (one process) for the Trilinos solvers.
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const std::string arg = argc > 1 ? argv[1] : "--help";
   if (arg == "--help" || arg == "-h" || argc > 2)
     {

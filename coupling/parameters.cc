@@ -99,6 +99,9 @@ namespace pumpd::coupling
     entry(prm, "Maximum steps", "100", Patterns::Integer(1), "Growth increments at most, >= 1.");
     entry(prm, "Maximum crack length", "0.3", Patterns::Double(0.),
                       "Stop when the crack polyline is this long [m], > 0.");
+    entry(prm, "Linear solver", "direct", Patterns::Selection("direct|cg-amg"),
+          "direct: UMFPACK; cg-amg: conjugate gradients with AMG (Trilinos ML, rigid-body modes) on the "
+          "standard unknowns and a direct solve on the enriched ones, for large meshes.");
     entry(prm, "Tip enrichment radius", "0.01", Patterns::Double(0.),
                       "Nodes within this distance of a tip carry the branch functions [m]; at least the "
                       "diameter of the cell at the tip (default mesh: 2.5 band cells). The interaction "
@@ -165,6 +168,7 @@ namespace pumpd::coupling
     p.max_steps         = prm.get_integer("Maximum steps");
     p.max_crack_length  = prm.get_double("Maximum crack length");
     p.tip_radius        = prm.get_double("Tip enrichment radius");
+    p.iterative_solver  = prm.get("Linear solver") == "cg-amg";
     p.refinement_levels = prm.get_integer("Refinement levels near the tip");
     p.refinement_radius = prm.get_double("Refinement radius");
     p.hole_margin       = prm.get_double("Hole margin");
