@@ -95,7 +95,6 @@ namespace pumpd::global
     FEValues<2>       fv_plain(mapping, fe, gauss, flags), fv_tip(mapping, fe, gauss_tip, flags);
     BasisValues       basis;
     std::vector<int>  side;
-    std::vector<types::global_dof_index> local;
     FullMatrix<double> K;
     Vector<double>     F;
 
@@ -142,13 +141,7 @@ namespace pumpd::global
                   }
               }
           }
-        local.clear();
-        for (const auto &f : functions)
-          {
-            local.push_back(f.dof);
-            local.push_back(f.dof + 1);
-          }
-        constraints.distribute_local_to_global(K, F, local, matrix, rhs);
+        constraints.distribute_local_to_global(K, F, unknowns_of(functions), matrix, rhs);
       }
 
     // Tractions on boundary faces. A face the crack mouth cuts is integrated on its two parts
@@ -205,13 +198,7 @@ namespace pumpd::global
                       F(2 * a + 1) += t.y * face_basis.value[a][q] * fv_face.JxW(q);
                     }
                 }
-              local.clear();
-              for (const auto &fn : functions)
-                {
-                  local.push_back(fn.dof);
-                  local.push_back(fn.dof + 1);
-                }
-              constraints.distribute_local_to_global(F, local, rhs);
+              constraints.distribute_local_to_global(F, unknowns_of(functions), rhs);
             }
 
     // Point loads act on the standard unknowns of their node: every enriched function vanishes

@@ -99,7 +99,7 @@ namespace pumpd::global
             tip = &t;
         const auto add = [&](const RefPoint &a, const RefPoint &b, const RefPoint &c, bool singular) {
           if (std::abs(cross(b - a, c - a)) > 1e-14)
-            triangles.push_back({{a, b, c}, singular});
+            triangles.push_back({{{a, b, c}}, singular});
         };
         for (std::size_t i = 0; i < poly.size(); ++i)
           {

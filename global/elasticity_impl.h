@@ -40,6 +40,18 @@ namespace pumpd::global
     std::array<double, 4> weight{};
   };
 
+  /// The unknowns of a cell's functions: (x, y) of each, in order.
+  inline std::vector<dealii::types::global_dof_index> unknowns_of(const std::vector<LocalFunction> &functions)
+  {
+    std::vector<dealii::types::global_dof_index> dofs;
+    for (const auto &f : functions)
+      {
+        dofs.push_back(f.dof);
+        dofs.push_back(f.dof + 1);
+      }
+    return dofs;
+  }
+
   /// Values and gradients of a cell's local functions at the points of an FEValues object.
   struct BasisValues
   {

@@ -23,8 +23,8 @@ namespace pumpd::global
     /// Cell corners in counter-clockwise order (deal.II numbers them lexicographically).
     std::array<Point, 4> corners(const Cell &cell)
     {
-      return {to_point(cell->vertex(0)), to_point(cell->vertex(1)), to_point(cell->vertex(3)),
-              to_point(cell->vertex(2))};
+      return {{to_point(cell->vertex(0)), to_point(cell->vertex(1)), to_point(cell->vertex(3)),
+               to_point(cell->vertex(2))}};
     }
 
     /// The part of segment [a, b] inside the convex polygon (Cyrus-Beck); false if none.
@@ -166,7 +166,7 @@ namespace pumpd::global
               {
                 Point p, q;
                 if (clip_segment(vertices[s], vertices[s + 1], poly, p, q))
-                  pieces.push_back({to_unit(mapping, cell, p), to_unit(mapping, cell, q)});
+                  pieces.push_back({{to_unit(mapping, cell, p), to_unit(mapping, cell, q)}});
               }
             // Tips in the cell, and tips within one cell diameter of it (their nearest point of
             // the cell): sub-triangles are fanned from these points and get Duffy rules, so the
@@ -283,8 +283,8 @@ namespace pumpd::global
         }
     };
     const auto constrain_node = [&](unsigned int p, const Point &own, const Point &other, bool fx, bool fy) {
-      const std::array<bool, 2>   fix = {fx, fy};
-      const std::array<double, 2> u = {own.x, own.y}, w = {other.x, other.y};
+      const std::array<bool, 2>   fix = {{fx, fy}};
+      const std::array<double, 2> u = {{own.x, own.y}}, w = {{other.x, other.y}};
       for (unsigned int c = 0; c < 2; ++c)
         {
           if (!fix[c])
@@ -336,17 +336,8 @@ namespace pumpd::global
     constraints.close();
 
     DynamicSparsityPattern dsp(n_dofs);
-    std::vector<types::global_dof_index> local;
     for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        local.clear();
-        for (const auto &f : local_functions(cell))
-          {
-            local.push_back(f.dof);
-            local.push_back(f.dof + 1);
-          }
-        constraints.add_entries_local_to_global(local, dsp, false);
-      }
+      constraints.add_entries_local_to_global(unknowns_of(local_functions(cell)), dsp, false);
     sparsity.copy_from(dsp);
     matrix.reinit(sparsity);
     rhs.reinit(n_dofs);

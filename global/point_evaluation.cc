@@ -39,7 +39,7 @@ namespace pumpd::global
         const DoFHandler<2>::active_cell_iterator cell(&tria, found.first->level(), found.first->index(), &dof_handler);
         const double xi = found.second[0], eta = found.second[1];
         // Q1 shape functions at the reference point, deal.II's vertex order.
-        const std::array<double, 4> N = {(1. - xi) * (1. - eta), xi * (1. - eta), (1. - xi) * eta, xi * eta};
+        const std::array<double, 4> N = {{(1. - xi) * (1. - eta), xi * (1. - eta), (1. - xi) * eta, xi * eta}};
         int side = 1;
         if (crack)
           {
