@@ -99,11 +99,7 @@ TEST(GlobalPointEvaluation, TenThousandPoints)
   EnrichmentSettings settings;
   settings.tip_radius = 0.3;
   EnrichedElasticity problem(tria, field.material, settings);
-  problem.set_crack(edge_crack());
-  add_williams_boundary_data(problem, field);
-  problem.setup();
-  problem.assemble();
-  problem.solve();
+  solve_williams(problem, field);
   const auto sif = problem.stress_intensity_factors();
   std::cout << n_cells << " x " << n_cells << " cells, " << problem.n_dofs() << " dofs, K_I " << sif[0].k1 << "\n";
 

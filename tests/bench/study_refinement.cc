@@ -61,11 +61,7 @@ namespace
     EnrichmentSettings settings;
     settings.tip_radius = tip_radius;
     EnrichedElasticity problem(tria, field.material, settings);
-    problem.set_crack(edge_crack());
-    add_williams_boundary_data(problem, field);
-    problem.setup();
-    problem.assemble();
-    problem.solve();
+    solve_williams(problem, field);
     const auto    err = problem.errors(field.displacement(), field.gradient());
     const auto    sif = problem.stress_intensity_factors();
     RefinementRun run;

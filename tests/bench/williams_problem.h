@@ -84,6 +84,16 @@ namespace pumpd::bench
     });
   }
 
+  /// The edge crack with the Williams boundary data, set up, assembled and solved.
+  inline void solve_williams(EnrichedElasticity &problem, const Williams &field)
+  {
+    problem.set_crack(edge_crack());
+    add_williams_boundary_data(problem, field);
+    problem.setup();
+    problem.assemble();
+    problem.solve();
+  }
+
   inline double seconds_since(std::chrono::steady_clock::time_point start)
   {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

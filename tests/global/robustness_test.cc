@@ -57,6 +57,19 @@ namespace
     return p.y + (q.y - p.y) * (x - p.x) / (q.x - p.x);
   }
 
+  /// SENT loading: unit traction on top and bottom, rigid motions fixed at the right corners;
+  /// then set up, assemble and solve.
+  void solve_sent(EnrichedElasticity &problem)
+  {
+    problem.add_traction(3, [](geometry::Point) { return geometry::Point{0., 1.}; });
+    problem.add_traction(2, [](geometry::Point) { return geometry::Point{0., -1.}; });
+    problem.add_dirichlet_vertex({1., -2.}, {0., 0.});
+    problem.add_dirichlet_vertex({1., 2.}, {0., 0.}, true, false);
+    problem.setup();
+    problem.assemble();
+    problem.solve();
+  }
+
   Outcome run(const Case &c)
   {
     dealii::Triangulation<2> tria;
@@ -66,13 +79,7 @@ namespace
     settings.tip_radius = 0.1;
     EnrichedElasticity problem(tria, {1., 0.3, true}, settings);
     problem.set_crack(Crack(c.crack, {{0., -2., 1., 2.}, {}}, 1e-12));
-    problem.add_traction(3, [](geometry::Point) { return geometry::Point{0., 1.}; });
-    problem.add_traction(2, [](geometry::Point) { return geometry::Point{0., -1.}; });
-    problem.add_dirichlet_vertex({1., -2.}, {0., 0.});
-    problem.add_dirichlet_vertex({1., 2.}, {0., 0.}, true, false);
-    problem.setup();
-    problem.assemble();
-    problem.solve();
+    solve_sent(problem);
 
     // Finite displacements at the tip, just ahead of it and far away (displacement(), one cell
     // search each), and on both faces at x = 0.2 (Heaviside region) and 0.45 (tip region), exactly
@@ -160,13 +167,7 @@ TEST(GlobalRobustness, DisplacementOnCrackFaceHonoursSide)
   EnrichedElasticity problem(tria, {1., 0.3, true}, settings);
   const double y = 0.37 / 41.;
   problem.set_crack(Crack({{0., y}, {a, y}}, {{0., -2., 1., 2.}, {}}, 1e-12));
-  problem.add_traction(3, [](geometry::Point) { return geometry::Point{0., 1.}; });
-  problem.add_traction(2, [](geometry::Point) { return geometry::Point{0., -1.}; });
-  problem.add_dirichlet_vertex({1., -2.}, {0., 0.});
-  problem.add_dirichlet_vertex({1., 2.}, {0., 0.}, true, false);
-  problem.setup();
-  problem.assemble();
-  problem.solve();
+  solve_sent(problem);
   for (double x : {0.2, 0.45})
     {
       const geometry::Point on{x, y};
