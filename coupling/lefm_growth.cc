@@ -4,23 +4,20 @@
 
 #include <algorithm>
 #include <chrono>
-#include <cctype>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <limits>
-#include <map>
 #include <memory>
-#include <numeric>
 #include <optional>
 #include <ostream>
-#include <sstream>
 
+#include "beam_scene.h"
 #include "elasticity.h"
 #include "error.h"
 #include "mesh.h"
+#include "path_metrics.h"
 
 namespace pumpd::coupling
 {
@@ -30,26 +27,9 @@ namespace pumpd::coupling
   {
     constexpr double pi             = 3.14159265358979323846;
     constexpr double infinity       = std::numeric_limits<double>::infinity();
-    constexpr double crack_tolerance = 1e-9;  ///< [m]: "on the outline", "touches a hole"
-    constexpr double vertex_tolerance = 1e-6; ///< [m]: supports and load on mesh vertices
     /// A tip that would end within (look_ahead - 1) da of the outline or a hole's margin goes
     /// there in this step: no sliver of material (and no tiny cell cut) is left in front of it.
     constexpr double look_ahead = 1.5;
-
-    std::string to_text(Point p)
-    {
-      std::ostringstream s;
-      s << "(" << p.x << ", " << p.y << ")";
-      return s.str();
-    }
-
-    std::string to_text(const geometry::Polyline &line)
-    {
-      std::ostringstream s;
-      for (std::size_t k = 0; k < line.size(); ++k)
-        s << (k == 0 ? "" : "; ") << line[k].x << "," << line[k].y;
-      return s.str();
-    }
 
     void validate(const LefmGrowthParameters &p)
     {
@@ -69,186 +49,6 @@ namespace pumpd::coupling
       if (p.initial_crack.size() < 2)
         throw InvalidParameter("Initial crack", to_text(p.initial_crack), "needs at least 2 points");
     }
-
-    /// The body of the mesh: the bounding box as outline, and each connected ring of faces with
-    /// boundary id 5 (meshes/*.geo: holes) as the circle about its vertices' centroid through the
-    /// farthest of them (the mesh's hole is a polygon inscribed in that circle).
-    geometry::Body body_of(const dealii::Triangulation<2> &tria)
-    {
-      const auto &v = tria.get_vertices();
-      geometry::Body body{{infinity, infinity, -infinity, -infinity}, {}};
-      for (unsigned int i = 0; i < v.size(); ++i)
-        if (tria.get_used_vertices()[i])
-          {
-            body.outline.x_min = std::min(body.outline.x_min, v[i][0]);
-            body.outline.y_min = std::min(body.outline.y_min, v[i][1]);
-            body.outline.x_max = std::max(body.outline.x_max, v[i][0]);
-            body.outline.y_max = std::max(body.outline.y_max, v[i][1]);
-          }
-      // Union-find over the vertices of hole faces.
-      std::map<unsigned int, unsigned int> parent;
-      const auto root = [&](unsigned int a) {
-        while (parent[a] != a)
-          a = parent[a] = parent[parent[a]];
-        return a;
-      };
-      for (const auto &cell : tria.active_cell_iterators())
-        for (const auto &face : cell->face_iterators())
-          if (face->at_boundary() && face->boundary_id() == 5)
-            {
-              const unsigned int a = face->vertex_index(0), b = face->vertex_index(1);
-              parent.emplace(a, a);
-              parent.emplace(b, b);
-              parent[root(a)] = root(b);
-            }
-      std::map<unsigned int, std::vector<Point>> rings;
-      for (const auto &[i, unused] : parent)
-        rings[root(i)].push_back({v[i][0], v[i][1]});
-      for (const auto &[r, points] : rings)
-        {
-          Point c = std::accumulate(points.begin(), points.end(), Point{});
-          c       = (1. / points.size()) * c;
-          double radius = 0.;
-          for (const auto &p : points)
-            radius = std::max(radius, geometry::norm(p - c));
-          body.holes.push_back({c, radius});
-        }
-      return body;
-    }
-
-    /// The cells within `radius` of a tip are refined until they reach `levels` (the mesh file's
-    /// cells are level 0): along a growing crack the mesh is refined once, never coarsened.
-    void refine_at_tips(dealii::Triangulation<2> &tria, const std::vector<global::Tip> &tips, double radius,
-                        unsigned int levels)
-    {
-      for (unsigned int l = 0; l < levels; ++l)
-        {
-          bool flagged = false;
-          for (const auto &cell : tria.active_cell_iterators())
-            for (const auto &t : tips)
-              if (cell->level() < int(levels) &&
-                  cell->center().distance(dealii::Point<2>(t.position.x, t.position.y)) < radius + 0.5 * cell->diameter())
-                {
-                  cell->set_refine_flag();
-                  flagged = true;
-                }
-          if (!flagged)
-            return;
-          tria.execute_coarsening_and_refinement();
-        }
-    }
-
-    /// Distance along the unit ray x + t e, t >= 0, from x inside the box to its boundary.
-    double distance_to_outline(Point x, Point e, const geometry::Box &b)
-    {
-      double t = infinity;
-      if (e.x > 0.)
-        t = std::min(t, (b.x_max - x.x) / e.x);
-      if (e.x < 0.)
-        t = std::min(t, (b.x_min - x.x) / e.x);
-      if (e.y > 0.)
-        t = std::min(t, (b.y_max - x.y) / e.y);
-      if (e.y < 0.)
-        t = std::min(t, (b.y_min - x.y) / e.y);
-      return std::max(t, 0.);
-    }
-
-    /// First t >= 0 with |x + t e - c| = R for the unit e (0 if x is inside the circle, infinity
-    /// if the ray misses it): t = -b - sqrt(b^2 - |x - c|^2 + R^2), b = (x - c).e.
-    double distance_to_circle(Point x, Point e, Point c, double R)
-    {
-      const double b = geometry::dot(x - c, e), q = geometry::dot(x - c, x - c) - R * R;
-      if (q <= 0.)
-        return 0.;
-      if (b >= 0. || b * b < q)
-        return infinity;
-      return -b - std::sqrt(b * b - q);
-    }
-
-    /// Reference path (x, y per line; lines starting with '#' or a letter are skipped).
-    geometry::Polyline read_path(const std::string &file)
-    {
-      std::ifstream in(file);
-      if (!in)
-        throw InvalidParameter("Published path", file, "cannot be opened (relative paths start at the current directory)");
-      geometry::Polyline path;
-      std::string        line;
-      while (std::getline(in, line))
-        {
-          if (line.empty() || line[0] == '#' || std::isalpha(static_cast<unsigned char>(line[0])))
-            continue;
-          Point p;
-          if (std::sscanf(line.c_str(), "%lf,%lf", &p.x, &p.y) != 2)
-            throw InvalidParameter("Published path", file, "line \"" + line + "\" is not x,y");
-          path.push_back(p);
-        }
-      if (path.size() < 2)
-        throw InvalidParameter("Published path", file, "needs at least 2 points x,y");
-      return path;
-    }
-
-    /// Largest distance of a vertex of `reference` from the polyline `path`.
-    double deviation(const geometry::Polyline &path, const geometry::Polyline &reference)
-    {
-      double worst = 0.;
-      for (const auto &x : reference)
-        {
-          double d = infinity;
-          for (std::size_t k = 0; k + 1 < path.size(); ++k)
-            d = std::min(d, geometry::distance_to_segment(x, path[k], path[k + 1]));
-          worst = std::max(worst, d);
-        }
-      return worst;
-    }
-
-    void write_path(const std::string &file, const geometry::Polyline &path)
-    {
-      std::ofstream out(file);
-      out << std::setprecision(10) << "x_m,y_m\n";
-      for (const auto &p : path)
-        out << p.x << "," << p.y << "\n";
-    }
-
-    /// body.csv for scripts/plot_crack_path.py: outline and holes as bounding boxes (a hole is
-    /// the circle inscribed in its box), pin, roller and load as points (min = max).
-    void write_body(const std::string &file, const geometry::Body &body, const LefmGrowthParameters &p)
-    {
-      std::ofstream out(file);
-      out << std::setprecision(10) << "shape,x_min_m,y_min_m,x_max_m,y_max_m\n";
-      const auto &o = body.outline;
-      out << "outline," << o.x_min << "," << o.y_min << "," << o.x_max << "," << o.y_max << "\n";
-      for (const auto &h : body.holes)
-        out << "hole," << h.centre.x - h.radius << "," << h.centre.y - h.radius << "," << h.centre.x + h.radius
-            << "," << h.centre.y + h.radius << "\n";
-      for (const auto &[name, x] : {std::pair{"pin", p.pin}, {"roller", p.roller}, {"load", p.load_point}})
-        out << name << "," << x.x << "," << x.y << "," << x.x << "," << x.y << "\n";
-    }
-
-    /// A growing series of global_NNN.vtu, indexed by global.pvd (rewritten at each add).
-    class VtuSeries
-    {
-    public:
-      explicit VtuSeries(std::string dir)
-        : directory(std::move(dir))
-      {}
-
-      void add(const global::EnrichedElasticity &solution, std::size_t step)
-      {
-        char name[32];
-        std::snprintf(name, sizeof(name), "global_%03zu.vtu", step);
-        solution.write_vtu(directory + "/" + name);
-        entries.emplace_back(step, name);
-        std::ofstream pvd(directory + "/global.pvd");
-        pvd << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
-        for (const auto &[s, file] : entries)
-          pvd << "<DataSet timestep=\"" << s << "\" file=\"" << file << "\"/>\n";
-        pvd << "</Collection>\n</VTKFile>\n";
-      }
-
-    private:
-      std::string                                     directory;
-      std::vector<std::pair<std::size_t, std::string>> entries;
-    };
 
     /// What happens to one tip in one step.
     struct Growth
@@ -320,24 +120,8 @@ namespace pumpd::coupling
     global::read_mesh(p.mesh_file, tria, p.mesh_size);
     global::require_boundary_ids(tria, {1, 2, 3, 4});
     const geometry::Body body = body_of(tria);
-    for (const auto &[name, x] : {std::pair{"Pin support", p.pin}, {"Roller support", p.roller}, {"Load point", p.load_point}})
-      try
-        {
-          global::find_vertex(tria, x, vertex_tolerance);
-        }
-      catch (const InvalidParameter &e)
-        {
-          throw InvalidParameter(name, to_text(x), e.what());
-        }
-    std::optional<global::Crack> crack;
-    try
-      {
-        crack.emplace(p.initial_crack, body, crack_tolerance);
-      }
-    catch (const InvalidParameter &e)
-      {
-        throw InvalidParameter("Initial crack", to_text(p.initial_crack), e.what());
-      }
+    require_vertices(tria, {{"Pin support", p.pin}, {"Roller support", p.roller}, {"Load point", p.load_point}});
+    std::optional<global::Crack> crack = initial_crack(p.initial_crack, body);
 
     global::ElasticMaterial material{p.youngs_modulus, p.poisson_ratio, p.plane_strain};
     global::EnrichmentSettings enrichment;
@@ -347,13 +131,13 @@ namespace pumpd::coupling
     problem.add_dirichlet_vertex(p.roller, {0., 0.}, false, true);
     problem.add_point_load(p.load_point, {0., -p.load});
 
-    std::unique_ptr<VtuSeries> series;
+    std::unique_ptr<GlobalVtuSeries> series;
     std::ofstream              table;
     if (!p.output_directory.empty())
       {
         std::filesystem::create_directories(p.output_directory);
-        series = std::make_unique<VtuSeries>(p.output_directory);
-        write_body(p.output_directory + "/body.csv", body, p);
+        series = std::make_unique<GlobalVtuSeries>(p.output_directory);
+        write_body(p.output_directory + "/body.csv", body, {{"pin", p.pin}, {"roller", p.roller}, {"load", p.load_point}});
         if (!reference.empty())
           write_path(p.output_directory + "/reference_path.csv", reference);
         table.open(p.output_directory + "/load_steps.csv");
@@ -467,7 +251,7 @@ namespace pumpd::coupling
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     if (!reference.empty())
       {
-        result.published_deviation = deviation(result.path, reference);
+        result.published_deviation = directed_max_distance(reference, result.path);
         out << "pumpd-metric lefm.published_path_max_deviation_m " << result.published_deviation << "\n";
       }
     return result;
