@@ -140,6 +140,12 @@ namespace pumpd::global
     /// radius_factor * tip_radius of the tip.
     std::vector<StressIntensity> stress_intensity_factors(double radius_factor = 1.) const;
 
+    /// Error indicator per active cell (active_cell_index order), from the solution alone: the
+    /// traction residual across faces, eta_K^2 = sum_F h_F int_F |[sigma_h] n|^2 over interior
+    /// faces and |sigma_h n - t|^2 over boundary faces without Dirichlet data (Kelly's indicator
+    /// on the enriched field). For error-driven adaptive refinement.
+    std::vector<double> error_indicators() const;
+
     /// VTU with cut cells written as their sub-triangles (the opened crack is visible):
     /// displacement, stress, von Mises, enrichment per cell.
     void write_vtu(const std::string &filename) const;

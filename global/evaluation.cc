@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <optional>
 #include <stdexcept>
 
@@ -93,8 +94,19 @@ namespace pumpd::global
   // Interaction integral, domain form (Moes, Dolbow & Belytschko 1999, Eq. 34), in the tip frame:
   //   I = int_A [sigma_ij du^aux_i/dx_1 + sigma^aux_ij du_i/dx_1 - sigma_ik eps^aux_ik delta_1j] dq/dx_j dA,
   //   K = E' I / 2 with the auxiliary field of unit K_I (for K_I) or unit K_II (for K_II).
-  // q is the Q1 interpolant of 1 at nodes within radius_factor * tip_radius of the tip, 0 elsewhere,
-  // so only the ring of cells where q drops contributes: no singular integrand.
+  // q is the Q1 interpolant of a nodal ramp in r = |x_node - tip| (1 inside r_in, 0 outside r_out),
+  // so only the cells where q drops contributes: no singular integrand. The ring is placed where
+  // the enriched space represents the tip field, away from the blending cells (cells with a
+  // function that lacks the branch enrichment of this tip, whose error would enter K):
+  //   r_safe = min(tip_radius, min over such cells of their nearest node's distance): every cell
+  //            with a node closer than r_safe is fully tip enriched;
+  //   r_out  = radius_factor * r_safe (factor <= 1 keeps the ring inside the enriched zone);
+  //   r_in   = min(r_out / 2, r_out - 2 h), h the largest diameter of the cells with a node in
+  //            [r_out / 2, r_out) (so the ramp spans at least two cells), provided r_in >= h (the
+  //            tip cell stays out).
+  // Where the zone is too small for that (tip radius of a few cells), the step of the earlier
+  // definition: q = 1 at nodes within radius_factor * tip_radius, one ring of cells.
+  // ring_of() returns (r_in, r_out); r_in = r_out means the step.
   std::vector<StressIntensity> EnrichedElasticity::Impl::stress_intensity_factors(double radius_factor) const
   {
     std::vector<StressIntensity> result;
@@ -114,10 +126,49 @@ namespace pumpd::global
         R[0][1] = tip.direction.y;
         R[1][0] = -tip.direction.y;
         R[1][1] = tip.direction.x;
+        const auto distance = [&](unsigned int p) { return geometry::norm(to_point(support[nodes[p]]) - tip.position); };
+        // r_safe: the nearest node of a cell that is not fully enriched by this tip.
+        double r_safe = settings.tip_radius;
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          {
+            cell->get_dof_indices(dofs);
+            bool   full    = true;
+            double nearest = std::numeric_limits<double>::max();
+            for (unsigned int v = 0; v < 4; ++v)
+              for (const auto &[p, w] : parents[dofs[v]])
+                {
+                  full &= kind[p] == NodeKind::tip && node_tip[p] == t;
+                  nearest = std::min(nearest, distance(p));
+                }
+            if (!full)
+              r_safe = std::min(r_safe, nearest);
+          }
+        double r_out = radius_factor * r_safe, r_in = r_out;
+        {
+          double h = 0.;
+          for (const auto &cell : dof_handler.active_cell_iterators())
+            {
+              cell->get_dof_indices(dofs);
+              for (unsigned int v = 0; v < 4; ++v)
+                {
+                  const double r = geometry::norm(to_point(support[dofs[v]]) - tip.position);
+                  if (r >= 0.5 * r_out && r < r_out)
+                    h = std::max(h, cell->diameter());
+                }
+            }
+          r_in = std::min(0.5 * r_out, r_out - 2. * h);
+          if (h == 0. || r_in < h)
+            r_out = r_in = radius; // too few cells inside the enriched zone: the one-cell step
+        }
+        const auto q_at = [&](double r) {
+          if (r_out == r_in)
+            return r < r_out ? 1. : 0.;
+          return std::clamp((r_out - r) / (r_out - r_in), 0., 1.);
+        };
         const auto q_of = [&](types::global_dof_index s) {
           double q = 0.;
           for (const auto &[p, w] : parents[s])
-            q += w * (geometry::norm(to_point(support[nodes[p]]) - tip.position) < radius ? 1. : 0.);
+            q += w * q_at(distance(p));
           return q;
         };
         double I[2] = {0., 0.};
@@ -184,6 +235,112 @@ namespace pumpd::global
         result.push_back({tip.position, scale * I[0], scale * I[1]});
       }
     return result;
+  }
+
+  // Error indicator: the residual of the traction across faces (Kelly's indicator, in stresses
+  // and on the enriched field). Each interior face F = K | K' is visited once, from the finer side
+  // where the neighbour is coarser (so a hanging face is a child face), at the 3 Gauss points of
+  // F; both cells are evaluated at the same points, each point on its own side of the crack
+  // (points on the crack line are skipped). Boundary faces without Dirichlet data contribute
+  // sigma_h n - t. eta_K^2 += h_F int_F |jump|^2 for both cells of F.
+  std::vector<double> EnrichedElasticity::error_indicators() const
+  {
+    const Impl         &m      = *impl;
+    const double        lambda = m.material.lambda(), mu = m.material.mu();
+    std::vector<double> eta2(m.tria.n_active_cells(), 0.);
+    const QGauss<1>     gauss(3);
+    std::vector<Tensor<1, 2>> u;
+    std::vector<Tensor<2, 2>> grad;
+    const auto stresses = [&](const Cell &cell, const std::vector<dealii::Point<2>> &x, const std::vector<int> &side) {
+      std::vector<dealii::Point<2>> ref;
+      for (const auto &p : x)
+        ref.push_back(m.mapping.transform_real_to_unit_cell(cell, p));
+      FEValues<2> fv(m.mapping, m.fe, Quadrature<2>(ref), update_values | update_gradients | update_quadrature_points);
+      fv.reinit(cell);
+      m.field(fv, m.local_functions(cell), side, u, grad);
+      std::vector<Tensor<2, 2>> sigma;
+      for (const auto &g : grad)
+        sigma.push_back(stress_of(g, lambda, mu));
+      return sigma;
+    };
+    for (const auto &cell : m.dof_handler.active_cell_iterators())
+      for (unsigned int f = 0; f < 4; ++f)
+        {
+          const auto face = cell->face(f);
+          std::optional<Cell> other;
+          const Impl::Traction *traction = nullptr;
+          if (cell->at_boundary(f))
+            {
+              bool dirichlet = false;
+              for (const auto &d : m.dirichlet)
+                dirichlet |= d.id == face->boundary_id();
+              if (dirichlet)
+                continue;
+              for (const auto &t : m.tractions)
+                if (t.id == face->boundary_id())
+                  traction = &t;
+            }
+          else
+            {
+              if (cell->neighbor(f)->has_children())
+                continue; // visited from the children
+              if (!cell->neighbor_is_coarser(f) && cell->neighbor(f)->active_cell_index() < cell->active_cell_index())
+                continue; // visited from the neighbour
+              other = cell->neighbor(f);
+            }
+          const dealii::Point<2> a = face->vertex(0), b = face->vertex(1);
+          const double           length = a.distance(b);
+          Tensor<1, 2>           n;
+          n[0] = (b - a)[1] / length;
+          n[1] = -(b - a)[0] / length;
+          if ((face->center() - cell->center()) * n < 0.)
+            n *= -1.;
+          std::vector<dealii::Point<2>> x;
+          std::vector<int>              side;
+          std::vector<double>           w;
+          for (unsigned int q = 0; q < gauss.size(); ++q)
+            {
+              const dealii::Point<2> p = a + gauss.point(q)[0] * (b - a);
+              int                    s = 1;
+              if (m.crack)
+                {
+                  if (std::abs(m.crack->signed_distance(to_point(p))) < 1e-10 * length)
+                    continue;
+                  s = m.crack->side(to_point(p));
+                }
+              x.push_back(p);
+              side.push_back(s);
+              w.push_back(gauss.weight(q) * length);
+            }
+          if (x.empty())
+            continue;
+          const auto   sigma = stresses(cell, x, side);
+          double       jump2 = 0.;
+          if (other)
+            {
+              const auto sigma_other = stresses(*other, x, side);
+              for (unsigned int q = 0; q < x.size(); ++q)
+                jump2 += w[q] * ((sigma[q] - sigma_other[q]) * n).norm_square();
+            }
+          else
+            for (unsigned int q = 0; q < x.size(); ++q)
+              {
+                Tensor<1, 2> r = sigma[q] * n;
+                if (traction)
+                  {
+                    const auto t = traction->value(to_point(x[q]));
+                    r[0] -= t.x;
+                    r[1] -= t.y;
+                  }
+                jump2 += w[q] * r.norm_square();
+              }
+          eta2[cell->active_cell_index()] += length * jump2;
+          if (other)
+            eta2[(*other)->active_cell_index()] += length * jump2;
+        }
+    for (auto &e : eta2)
+      e = std::sqrt(e);
+    return eta2;
   }
 
   void EnrichedElasticity::Impl::write_vtu(const std::string &filename) const

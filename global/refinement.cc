@@ -1,6 +1,10 @@
 #include "refinement.h"
 
+#include <deal.II/grid/grid_refinement.h>
 #include <deal.II/grid/tria.h>
+#include <deal.II/lac/vector.h>
+
+#include <stdexcept>
 
 namespace pumpd::global
 {
@@ -15,5 +19,14 @@ namespace pumpd::global
               cell->set_refine_flag();
         tria.execute_coarsening_and_refinement();
       }
+  }
+
+  void refine_by_indicator(dealii::Triangulation<2, 2> &tria, const std::vector<double> &indicator, double fraction)
+  {
+    if (indicator.size() != tria.n_active_cells())
+      throw std::invalid_argument("refine_by_indicator: one indicator per active cell expected");
+    dealii::Vector<double> eta(indicator.begin(), indicator.end());
+    dealii::GridRefinement::refine_and_coarsen_fixed_number(tria, eta, fraction, 0.);
+    tria.execute_coarsening_and_refinement();
   }
 } // namespace pumpd::global

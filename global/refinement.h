@@ -1,5 +1,5 @@
-// Adaptive refinement near crack tips (hanging nodes), for refinement studies and to resolve
-// the tip region of a coarse body mesh.
+// Adaptive refinement (hanging nodes): geometric, near crack tips (to resolve the tip region of a
+// coarse body mesh), or driven by an error indicator (EnrichedElasticity::error_indicators()).
 #pragma once
 
 #include <vector>
@@ -18,4 +18,11 @@ namespace pumpd::global
   /// (the radius is kept fixed, so each level halves the cells inside it).
   void refine_near(dealii::Triangulation<2, 2> &triangulation, const std::vector<geometry::Point> &points,
                    double radius, unsigned int levels);
+
+  /// Refines the `fraction` of the active cells with the largest indicators (one value per active
+  /// cell, in active_cell_index order; deal.II's GridRefinement::refine_and_coarsen_fixed_number,
+  /// no coarsening). The enrichment must be set up again afterwards (EnrichedElasticity::setup()
+  /// on a new object or after the mesh change).
+  void refine_by_indicator(dealii::Triangulation<2, 2> &triangulation, const std::vector<double> &indicator,
+                           double fraction);
 } // namespace pumpd::global
