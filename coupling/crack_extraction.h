@@ -1,0 +1,68 @@
+// Crack extraction: the crack increment of a PD run, read off its nodal damage field D (the
+// weighted fraction of a node's bonds that failed; ~0.4 on the crack faces, 0 one horizon away).
+// Ridge tracing with a transverse damage-weighted centroid:
+// 1. from the last vertex p along the direction t: predictor q = p + s t and the transverse
+//    profile D(q + eta n), |eta| <= w, n = t rotated by +90 degrees (bilinear interpolation),
+//    averaged over |tau| <= h along t: noise is damped and an isolated damaged node stays below
+//    the threshold D_c (the band of a crack face is at least two nodes wide and continues);
+// 2. its runs above D_c (gaps shorter than a spacing closed, runs narrower than a spacing ignored):
+//    none: the ridge ends near q; two or more: the crack branches (thrown, never guessed);
+//    one: the next vertex is its centroid c = q + eta_c n, eta_c = int eta (D - D_c) / int (D - D_c),
+//    and t turns towards c by at most `max_turn`;
+// 3. the new tip: marching from the last vertex along t by h/8, the first point where the ridge
+//    damage R(x) = max_{|eta| <= h} D(x + eta n) drops to half the crack-face damage (the median R
+//    over the last horizon of the ridge), interpolated linearly: a node at the tip of a straight
+//    crack has a quarter of its bonds cut, half the face damage (the threshold would fall about a
+//    spacing behind the tip). The march also stops where the material ends (a hole, the field's edge);
+// 4. Douglas-Peucker simplification (tolerance h/2). An increment shorter than one spacing is
+//    below the lattice resolution: no growth.
+#pragma once
+
+#include <cstddef>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "geometry.h"
+
+namespace pumpd::coupling
+{
+  /// Nodal damage on the PD lattice: node (i, j) at origin + (i h, j h), values[j * nx + i];
+  /// NaN where there is no material. A node stands for its cell (side h, centred on it).
+  struct DamageField
+  {
+    geometry::Point     origin;
+    double              spacing = 0.;
+    std::size_t         nx = 0, ny = 0;
+    std::vector<double> values;
+  };
+
+  struct ExtractionSettings
+  {
+    double threshold         = 0.3; ///< damage above which a node lies on the crack (PD crack faces reach ~0.4)
+    double step              = 0.;  ///< tracing step [m]; 0: 2 spacings
+    double search_half_width = 0.;  ///< half width of the transverse search window [m]; 0: the horizon
+    double horizon           = 0.;  ///< delta [m], sets default widths
+    double max_turn          = 0.785398163397448; ///< largest turn of the tip direction per step [rad] (45 degrees)
+    double simplification    = 0.;  ///< Douglas-Peucker tolerance [m]; 0: half a spacing
+  };
+
+  struct CrackIncrement
+  {
+    geometry::Polyline path;        ///< path[0] == tip; path.size() == 1: no growth
+    std::string        stop_reason; ///< why the tracing stopped
+    double             length() const { return geometry::length(path); }
+  };
+
+  /// Thrown when the damage ridge splits into two branches: refused, never guessed.
+  struct CrackBranching : std::runtime_error
+  {
+    using std::runtime_error::runtime_error;
+  };
+
+  /// Traces the damage ridge from the current tip along `direction` (the tip direction of the
+  /// crack; normalised here) and returns the crack increment. Throws InvalidParameter for a bad
+  /// field, tip, direction or setting, CrackBranching where the ridge splits.
+  CrackIncrement extract_crack(const DamageField &damage, geometry::Point tip, geometry::Point direction,
+                               const ExtractionSettings &settings);
+} // namespace pumpd::coupling
