@@ -11,6 +11,7 @@
 #include <string>
 
 #include "error.h"
+#include "global_local.h"
 #include "lefm_growth.h"
 #include "parameters.h"
 #include "pd_edge_crack.h"
@@ -51,6 +52,8 @@ namespace
                   << " increments, length " << pumpd::geometry::length(r.path) << " m (" << r.stop_reason << "), "
                   << r.seconds << " s\n";
       }
+    else if (type == "global-local")
+      pumpd::coupling::run_global_local(pumpd::coupling::read_global_local(prm), std::cout);
     return 0;
   }
 } // namespace

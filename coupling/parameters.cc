@@ -22,10 +22,12 @@ namespace pumpd::coupling
   void declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Scene");
-    entry(prm, "Type", "pd-edge-crack", Patterns::Selection("pd-edge-crack|lefm-growth"),
+    entry(prm, "Type", "pd-edge-crack", Patterns::Selection("pd-edge-crack|lefm-growth|global-local"),
                       "Which scene to run. pd-edge-crack: a PD box around a mode-I edge-crack tip, "
                       "its boundary layer driven by the Williams field of a rising K. lefm-growth: "
-                      "LEFM crack growth in the Ingraffea beam (XFEM, maximum hoop stress; no PD).");
+                      "LEFM crack growth in the Ingraffea beam (XFEM, maximum hoop stress; no PD). "
+                      "global-local: the coupled cycle in the Ingraffea beam (XFEM drives a PD box at "
+                      "the tip, the PD damage grows the crack; subsections Peridynamics and Global-local).");
     entry(prm, "Output directory", "out", Patterns::DirectoryName(),
                       "Where VTU/PVD, load_steps.csv, checkpoint.h5, crack_path.csv go (created if "
                       "missing). Relative paths in a scene file (this one, Mesh file, Published path) "
@@ -118,6 +120,62 @@ namespace pumpd::coupling
                       "reference_path.csv and compared (the largest distance of its points from our path); "
                       "empty: none. Relative to the current directory.");
     prm.leave_subsection();
+
+    prm.enter_subsection("Global-local");
+    entry(prm, "Mesh file", "meshes/ingraffea-beam-holes.geo", Patterns::FileName(),
+          "The beam, as in LEFM growth: gmsh .geo or .msh, all quadrilaterals, ids 1-4 outline, 5 holes.");
+    entry(prm, "Mesh size", "0.008", Patterns::Double(0., 1.), "h passed to gmsh for a .geo [m], in [0, 1]; 0: the file's default.");
+    entry(prm, "Initial crack", "0.1016,0; 0.1016,0.0254", Patterns::List(point, 2, Patterns::List::max_int_value, ";"),
+          "Edge crack polyline \"x1,y1; x2,y2; ...\" [m]: one end on the outline (the mouth), the other the "
+          "tip; inside the body and clear of the holes.");
+    entry(prm, "Poisson's ratio", "0.25", Patterns::Double(0., 0.5),
+          "nu of the global body, in [0, 0.5). Bond-based PD has nu = 1/4 (plane strain), 1/3 (plane stress): "
+          "use the same here so that the two models describe one material.");
+    entry(prm, "Pin support", "0.0254,0", point, "x,y [m] of the mesh vertex with both displacements fixed.");
+    entry(prm, "Roller support", "0.4826,0", point, "x,y [m] of the mesh vertex with the vertical displacement fixed.");
+    entry(prm, "Load point", "0.254,0.2032", point, "x,y [m] of the mesh vertex where the point load acts (downwards).");
+    entry(prm, "Reference load", "1e5", Patterns::Double(0.),
+          "P_ref [N/m], > 0: the global solve's load; the load of each exchange is lambda P_c with the "
+          "critical load P_c (G = G_c at the tip) scaled from it.");
+    entry(prm, "Linear solver", "direct", Patterns::Selection("direct|cg-amg"), "direct: UMFPACK; cg-amg: CG with AMG.");
+    entry(prm, "Tip enrichment radius", "0.006", Patterns::Double(0.), "Branch-function radius around the tip [m], > 0.");
+    entry(prm, "Refinement levels near the tip", "2", Patterns::Integer(0, 6), "Cells near the tip are refined to this level, in [0, 6].");
+    entry(prm, "Refinement radius", "0.008", Patterns::Double(0.), "Refine the cells within this distance of the tip [m], > 0.");
+    entry(prm, "Box size", "0.032", Patterns::Double(0.),
+          "Side of the square PD box [m]: at least 4 horizons plus the box margin, at most the body's smaller side.");
+    entry(prm, "Box tip position", "0.3", Patterns::Double(0., 1.),
+          "The tip sits this fraction of the box side from the box's rear (along the crack), in [0.05, 0.95].");
+    entry(prm, "Box margin", "0.008", Patterns::Double(0.),
+          "The box moves ahead once the tip has less than this much free lattice ahead [m], > 0.");
+    entry(prm, "Maximum box size", "0.064", Patterns::Double(0.),
+          "A box grows to take in a nearby hole up to this side [m], >= Box size.");
+    entry(prm, "Crack damage threshold", "0.3", Patterns::Double(0., 1.),
+          "A node with PD damage above this lies on the crack, in [0.05, 0.95] (crack faces reach ~0.41).");
+    entry(prm, "First load factor", "0.9", Patterns::Double(0., 100.),
+          "lambda = load / P_c of the first PD state of the first exchange, in [0.05, 10].");
+    entry(prm, "Load increment", "0.05", Patterns::Double(0., 1.), "dlambda between PD states, in [1e-4, 1].");
+    entry(prm, "Minimum load increment", "0.0125", Patterns::Double(0., 1.),
+          "A too-long advance halves dlambda down to this, then the advance is truncated; in [1e-6, Load increment].");
+    entry(prm, "Maximum load factor", "3", Patterns::Double(0., 100.),
+          "No growth up to lambda = this: the run stops (the load is too small), in [First load factor, 100].");
+    entry(prm, "Maximum advance", "0.008", Patterns::Double(0.), "da_max: the longest crack advance per exchange [m], > 0.");
+    entry(prm, "Minimum advance", "0.001", Patterns::Double(0.),
+          "An advance below this is no growth [m], at least two PD spacings and at most da_max / 2.");
+    entry(prm, "Near distance", "0.008", Patterns::Double(0., 1.),
+          "Within this of a hole or the outline the advance per exchange is da_max / 2 [m], in [0, 1].");
+    entry(prm, "Maximum exchanges", "60", Patterns::Integer(1), "Global-local exchanges at most, >= 1.");
+    entry(prm, "Maximum crack length", "0.3", Patterns::Double(0.), "Stop when the crack polyline is this long [m], > 0.");
+    entry(prm, "Hole margin", "0.001", Patterns::Double(0., 1.), "A tip stops this far [m] from a hole's circle, in [0, 1].");
+    entry(prm, "Reference box area", "0.02258", Patterns::Double(0.),
+          "Area of the fixed PD box the moving box is compared with [m^2]; default: Ni et al. (2019), "
+          "(2, 0)-(7, 7) in = 0.127 m x 0.1778 m.");
+    entry(prm, "Output interval", "1", Patterns::Integer(1), "Write global and PD VTU every n exchanges (and the last), >= 1.");
+    entry(prm, "Published path", "", Patterns::Anything(),
+          "Optional CSV of a published path (x,y [m] per line): copied to reference_path.csv and compared "
+          "(symmetric mean and Hausdorff distance over its length). Relative to the current directory.");
+    entry(prm, "Resume", "false", Patterns::Bool(),
+          "true: continue from checkpoint.h5 in the output directory (written after every exchange).");
+    prm.leave_subsection();
   }
 
   std::string scene_type(ParameterHandler &prm)
@@ -204,6 +262,64 @@ namespace pumpd::coupling
     p.crack_damage    = prm.get_double("Crack damage threshold");
     p.growth_to_stop  = prm.get_double("Stop after growth");
     p.output_interval = prm.get_integer("Output interval");
+    prm.leave_subsection();
+    return p;
+  }
+} // namespace pumpd::coupling
+
+namespace pumpd::coupling
+{
+  GlobalLocalParameters read_global_local(ParameterHandler &prm)
+  {
+    GlobalLocalParameters p;
+    p.output_directory = output_directory(prm);
+    prm.enter_subsection("Material");
+    p.material.youngs_modulus  = prm.get_double("Young's modulus");
+    p.material.fracture_energy = prm.get_double("Fracture energy");
+    p.material.density         = prm.get_double("Density");
+    p.material.plane_strain    = prm.get_bool("Plane strain");
+    prm.leave_subsection();
+    prm.enter_subsection("Peridynamics");
+    p.horizon               = prm.get_double("Horizon");
+    p.horizon_ratio         = prm.get_integer("Horizon over spacing");
+    p.material.influence    = local::influence_from_string(prm.get("Influence function"));
+    p.material.break_factor = prm.get_double("Bond break factor");
+    p.tolerance             = prm.get_double("Relaxation tolerance");
+    p.max_iterations        = prm.get_integer("Relaxation max iterations");
+    prm.leave_subsection();
+    prm.enter_subsection("Global-local");
+    p.mesh_file = prm.get("Mesh file");
+    p.mesh_size = prm.get_double("Mesh size");
+    for (const auto &point : dealii::Utilities::split_string_list(prm.get("Initial crack"), ';'))
+      p.initial_crack.push_back(to_point(point));
+    p.poisson_ratio                 = prm.get_double("Poisson's ratio");
+    p.pin                           = to_point(prm.get("Pin support"));
+    p.roller                        = to_point(prm.get("Roller support"));
+    p.load_point                    = to_point(prm.get("Load point"));
+    p.reference_load                = prm.get_double("Reference load");
+    p.iterative_solver              = prm.get("Linear solver") == "cg-amg";
+    p.tip_radius                    = prm.get_double("Tip enrichment radius");
+    p.refinement_levels             = prm.get_integer("Refinement levels near the tip");
+    p.refinement_radius             = prm.get_double("Refinement radius");
+    p.box.size                      = prm.get_double("Box size");
+    p.box.behind                    = prm.get_double("Box tip position");
+    p.box.margin                    = prm.get_double("Box margin");
+    p.box.max_size                  = prm.get_double("Maximum box size");
+    p.crack_damage                  = prm.get_double("Crack damage threshold");
+    p.exchange.first_load_factor    = prm.get_double("First load factor");
+    p.exchange.load_increment       = prm.get_double("Load increment");
+    p.exchange.min_load_increment   = prm.get_double("Minimum load increment");
+    p.exchange.max_load_factor      = prm.get_double("Maximum load factor");
+    p.exchange.max_advance          = prm.get_double("Maximum advance");
+    p.exchange.min_advance          = prm.get_double("Minimum advance");
+    p.exchange.near_distance        = prm.get_double("Near distance");
+    p.max_exchanges                 = prm.get_integer("Maximum exchanges");
+    p.max_crack_length              = prm.get_double("Maximum crack length");
+    p.hole_margin                   = prm.get_double("Hole margin");
+    p.reference_box_area            = prm.get_double("Reference box area");
+    p.output_interval               = prm.get_integer("Output interval");
+    p.published_path                = prm.get("Published path");
+    p.resume                        = prm.get_bool("Resume");
     prm.leave_subsection();
     return p;
   }

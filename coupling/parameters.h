@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "global_local.h"
 #include "lefm_growth.h"
 #include "pd_edge_crack.h"
 
@@ -23,4 +24,5 @@ namespace pumpd::coupling
 
   EdgeCrackParameters  read_edge_crack(dealii::ParameterHandler &prm);
   LefmGrowthParameters read_lefm_growth(dealii::ParameterHandler &prm);
+  GlobalLocalParameters read_global_local(dealii::ParameterHandler &prm);
 } // namespace pumpd::coupling

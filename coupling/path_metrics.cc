@@ -51,6 +51,27 @@ namespace pumpd::coupling
     return out;
   }
 
+  geometry::Polyline up_to_nearest(const geometry::Polyline &line, Point x)
+  {
+    if (line.size() < 2)
+      return line;
+    std::size_t best_k = 0;
+    double      best_t = 0., best_d = std::numeric_limits<double>::infinity();
+    for (std::size_t k = 0; k + 1 < line.size(); ++k)
+      {
+        const Point  e  = line[k + 1] - line[k];
+        const double ll = geometry::dot(e, e);
+        const double t  = ll > 0. ? std::clamp(geometry::dot(x - line[k], e) / ll, 0., 1.) : 0.;
+        const double d  = geometry::norm(x - (line[k] + t * e));
+        if (d < best_d)
+          best_d = d, best_k = k, best_t = t;
+      }
+    geometry::Polyline out(line.begin(), line.begin() + best_k + 1);
+    if (best_t > 0.)
+      out.push_back(line[best_k] + best_t * (line[best_k + 1] - line[best_k]));
+    return out;
+  }
+
   namespace
   {
     /// Points every `step` along the polyline (segment ends included), each with the arc length

@@ -22,6 +22,9 @@ namespace pumpd::coupling
   double directed_max_distance(const geometry::Polyline &from, const geometry::Polyline &to);
   /// The first `length` [m] of the polyline (all of it if shorter).
   geometry::Polyline truncate(const geometry::Polyline &line, double length);
+  /// The polyline up to its point nearest to x (the part of a computed path that a shorter
+  /// reference path covers: arc lengths differ when the reference is a lattice staircase).
+  geometry::Polyline up_to_nearest(const geometry::Polyline &line, geometry::Point x);
   /// Symmetric mean and Hausdorff distance, both curves sampled every `step` [m] (> 0).
   PathDistance path_distance(const geometry::Polyline &a, const geometry::Polyline &b, double step);
 } // namespace pumpd::coupling

@@ -91,6 +91,8 @@ namespace pumpd::global
   void EnrichedElasticity::assemble() { impl->assemble(); }
   SolveReport EnrichedElasticity::solve(const SolverSettings &solver) { return impl->solve(solver); }
 
+  void EnrichedElasticity::scale_solution(double factor) { impl->solution *= factor; }
+
   unsigned int EnrichedElasticity::n_dofs() const { return impl->n_dofs; }
   unsigned int EnrichedElasticity::n_enriched_dofs() const { return impl->n_dofs - 2 * impl->nodes.size(); }
   unsigned int EnrichedElasticity::n_heaviside_nodes() const { return impl->count(NodeKind::heaviside); }

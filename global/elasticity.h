@@ -118,6 +118,10 @@ namespace pumpd::global
     void        assemble();
     SolveReport solve(const SolverSettings &solver = {});
 
+    /// Multiplies the solution by `factor`: the problem is linear, so this is the solution for
+    /// every load and boundary value multiplied by it (one solve serves every load level).
+    void scale_solution(double factor);
+
     unsigned int n_dofs() const;
     unsigned int n_enriched_dofs() const;
     unsigned int n_heaviside_nodes() const;

@@ -1,0 +1,110 @@
+#include "box_policy.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "error.h"
+
+namespace pumpd::coupling
+{
+  using geometry::Box;
+  using geometry::Point;
+
+  BoxPolicy::BoxPolicy(const geometry::Body &b, const BoxSettings &settings)
+    : body(b)
+    , s(settings)
+  {
+    require_positive("Horizon", s.horizon);
+    require_positive("PD spacing", s.spacing);
+    require_range("Box tip position", s.behind, 0.05, 0.95, "must be in [0.05, 0.95] (fraction of the box side)");
+    require_positive("Box margin", s.margin);
+    const double least = 4. * s.horizon + s.margin;
+    if (!(s.size >= least))
+      throw InvalidParameter("Box size", std::to_string(s.size),
+                             "must be at least 4 horizons plus the box margin (" + std::to_string(least) +
+                               " m): a boundary layer on each side, a horizon of free lattice around the tip");
+    if (s.size > std::min(body.outline.width(), body.outline.height()))
+      throw InvalidParameter("Box size", std::to_string(s.size),
+                             "must not exceed the body's smaller side (" +
+                               std::to_string(std::min(body.outline.width(), body.outline.height())) + " m)");
+    if (s.max_size < s.size)
+      throw InvalidParameter("Maximum box size", std::to_string(s.max_size), "must be >= the box size " +
+                                                                              std::to_string(s.size) + " m");
+  }
+
+  bool BoxPolicy::keeps(const Box &box, Point tip, Point d) const
+  {
+    // The tip must be clear of each interior edge by a horizon (layer) plus a horizon, and the
+    // box must hold `margin` of free lattice ahead of the tip along d.
+    const auto &o        = body.outline;
+    const double tol     = 0.25 * s.spacing;
+    const double layer_x0 = box.x_min > o.x_min + tol ? s.horizon : 0., layer_x1 = box.x_max < o.x_max - tol ? s.horizon : 0.;
+    const double layer_y0 = box.y_min > o.y_min + tol ? s.horizon : 0., layer_y1 = box.y_max < o.y_max - tol ? s.horizon : 0.;
+    const Box    free{box.x_min + layer_x0 + s.horizon, box.y_min + layer_y0 + s.horizon,
+                      box.x_max - layer_x1 - s.horizon, box.y_max - layer_y1 - s.horizon};
+    const Box    free_ahead{box.x_min + layer_x0, box.y_min + layer_y0, box.x_max - layer_x1, box.y_max - layer_y1};
+    return free.contains(tip) && free_ahead.contains(tip + s.margin * d);
+  }
+
+  Box BoxPolicy::fitted(Box box) const
+  {
+    const auto &o = body.outline;
+    // Holes within reach: inside with a horizon to spare, or the box grows (up to max_size).
+    for (const auto &hole : body.holes)
+      {
+        const double reach = hole.radius + 2. * s.horizon;
+        const Box    around{hole.centre.x - reach, hole.centre.y - reach, hole.centre.x + reach, hole.centre.y + reach};
+        const bool   near  = around.x_max > box.x_min && around.x_min < box.x_max && around.y_max > box.y_min &&
+                          around.y_min < box.y_max;
+        if (!near || box.contains(around))
+          continue;
+        Box grown{std::min(box.x_min, around.x_min), std::min(box.y_min, around.y_min),
+                  std::max(box.x_max, around.x_max), std::max(box.y_max, around.y_max)};
+        if (grown.width() <= s.max_size && grown.height() <= s.max_size)
+          box = grown;
+      }
+    // Shift into the body, then reach out to the outline where a sliver would remain.
+    const double snap = 2. * s.horizon;
+    const auto   shift_into = [](double &lo, double &hi, double min, double max) {
+      if (hi - lo >= max - min)
+        lo = min, hi = max;
+      else if (lo < min)
+        hi += min - lo, lo = min;
+      else if (hi > max)
+        lo -= hi - max, hi = max;
+    };
+    shift_into(box.x_min, box.x_max, o.x_min, o.x_max);
+    shift_into(box.y_min, box.y_max, o.y_min, o.y_max);
+    // Interior edges on lattice lines (outward), outline edges exactly on the outline.
+    const double h    = s.spacing;
+    const auto   snap_edge = [&](double &lo, double &hi, double min, double max) {
+      lo = lo - min < snap ? min : min + std::floor((lo - min) / h + 1e-9) * h;
+      hi = max - hi < snap ? max : min + std::ceil((hi - min) / h - 1e-9) * h;
+      hi = std::min(hi, max);
+    };
+    snap_edge(box.x_min, box.x_max, o.x_min, o.x_max);
+    snap_edge(box.y_min, box.y_max, o.y_min, o.y_max);
+    return box;
+  }
+
+  Box BoxPolicy::place(Point tip, Point d)
+  {
+    if (!boxes.empty() && keeps(boxes.back(), tip, d))
+      {
+        last_moved = false;
+        boxes.push_back(boxes.back());
+        return boxes.back();
+      }
+    const Point c = tip + ((0.5 - s.behind) * s.size) * d;
+    const Box   box{c.x - 0.5 * s.size, c.y - 0.5 * s.size, c.x + 0.5 * s.size, c.y + 0.5 * s.size};
+    last_moved = true;
+    boxes.push_back(fitted(box));
+    return boxes.back();
+  }
+
+  void BoxPolicy::restore(const std::vector<Box> &history)
+  {
+    boxes = history;
+  }
+} // namespace pumpd::coupling

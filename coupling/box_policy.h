@@ -1,0 +1,54 @@
+// Where the PD box goes (DESIGN.md, coupling/ BoxPolicy). A square of side `size` around the
+// crack tip, the tip `behind` x size from its rear along the crack direction, so that most of
+// the box lies where the crack will go. The box
+//  - stays where it is while the tip keeps `margin` of free lattice (beyond the boundary layer of
+//    width delta) ahead of it, and moves ahead of the tip otherwise;
+//  - grows to take in a hole that would otherwise cut its boundary layer or come within one
+//    horizon of it (up to `max_size` a side), so a hole is either inside the PD model or clear of it;
+//  - reaches out to the body outline when an edge would come within `snap` of it (no sliver of
+//    material between the boundary layer and a free surface), and is clipped to the body;
+//  - has its interior edges on the lattice lines x = x_min(body) + i h, so that consecutive boxes
+//    share their nodes.
+#pragma once
+
+#include <vector>
+
+#include "geometry.h"
+
+namespace pumpd::coupling
+{
+  struct BoxSettings
+  {
+    double horizon  = 0.004;  ///< delta [m] (the boundary-layer width)
+    double spacing  = 0.0005; ///< PD lattice spacing h [m]
+    double size     = 0.032;  ///< side of the square box [m]
+    double behind   = 0.3;    ///< the tip sits this fraction of the side from the box's rear
+    double margin   = 0.008;  ///< free lattice the tip keeps ahead of it before the box moves [m]
+    double max_size = 0.064;  ///< a box grown for a hole stays within this side [m]
+  };
+
+  class BoxPolicy
+  {
+  public:
+    /// Throws InvalidParameter ("Box size", ...) if the box cannot hold the boundary layer on two
+    /// sides plus the margin, or does not fit into the body.
+    BoxPolicy(const geometry::Body &body, const BoxSettings &settings);
+
+    /// The box for a tip at `tip` growing along the unit `direction`; recorded in history().
+    geometry::Box place(geometry::Point tip, geometry::Point direction);
+    /// True if the last place() made a new box.
+    bool moved() const { return last_moved; }
+    const std::vector<geometry::Box> &history() const { return boxes; }
+    /// Continue after a restart with the boxes recorded so far.
+    void restore(const std::vector<geometry::Box> &history);
+
+  private:
+    bool          keeps(const geometry::Box &box, geometry::Point tip, geometry::Point direction) const;
+    geometry::Box fitted(geometry::Box box) const;
+
+    geometry::Body             body;
+    BoxSettings                s;
+    std::vector<geometry::Box> boxes;
+    bool                       last_moved = true;
+  };
+} // namespace pumpd::coupling

@@ -1,0 +1,93 @@
+#include "cycle_checkpoint.h"
+
+#include <hdf5.h>
+
+#include <filesystem>
+#include <stdexcept>
+
+namespace pumpd::coupling
+{
+  namespace
+  {
+    void fail_if(bool bad, const std::string &what)
+    {
+      if (bad)
+        throw std::runtime_error("cycle checkpoint: " + what);
+    }
+
+    void write_doubles(hid_t file, const char *name, const std::vector<double> &v)
+    {
+      const hsize_t n     = v.size();
+      const hid_t   space = H5Screate_simple(1, &n, nullptr);
+      const hid_t   set   = H5Dcreate2(file, name, H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+      fail_if(set < 0 || (n > 0 && H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) < 0),
+              std::string("cannot write ") + name);
+      H5Dclose(set);
+      H5Sclose(space);
+    }
+
+    std::vector<double> read_doubles(hid_t file, const char *name)
+    {
+      const hid_t set = H5Dopen2(file, name, H5P_DEFAULT);
+      fail_if(set < 0, std::string("no dataset ") + name);
+      const hid_t space = H5Dget_space(set);
+      hsize_t     n     = 0;
+      H5Sget_simple_extent_dims(space, &n, nullptr);
+      H5Sclose(space);
+      std::vector<double> v(n);
+      const bool bad = n > 0 && H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) < 0;
+      H5Dclose(set);
+      fail_if(bad, std::string("cannot read ") + name);
+      return v;
+    }
+  } // namespace
+
+  void write_cycle_checkpoint(const std::string &path, const CycleState &state)
+  {
+    // Written next to the target and renamed: an interruption never leaves half a checkpoint.
+    const std::string partial = path + ".partial";
+    const hid_t       file    = H5Fcreate(partial.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+    fail_if(file < 0, "cannot create " + partial);
+    std::vector<double> crack, boxes;
+    for (const auto &p : state.crack)
+      crack.insert(crack.end(), {p.x, p.y});
+    for (const auto &b : state.boxes)
+      boxes.insert(boxes.end(), {b.x_min, b.y_min, b.x_max, b.y_max});
+    write_doubles(file, "crack", crack);
+    write_doubles(file, "boxes", boxes);
+    write_doubles(file, "cycle", {double(state.exchanges), state.load_factor, state.finished ? 1. : 0.});
+    H5Fclose(file);
+    std::filesystem::rename(partial, path);
+  }
+
+  CycleState read_cycle_checkpoint(const std::string &path)
+  {
+    fail_if(!std::filesystem::exists(path), path + " does not exist");
+    const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    fail_if(file < 0, "cannot open " + path);
+    CycleState          s;
+    std::vector<double> crack, boxes, cycle;
+    try
+      {
+        crack = read_doubles(file, "crack");
+        boxes = read_doubles(file, "boxes");
+        cycle = read_doubles(file, "cycle");
+      }
+    catch (...)
+      {
+        H5Fclose(file);
+        throw;
+      }
+    H5Fclose(file);
+    fail_if(crack.size() < 4 || crack.size() % 2 != 0 || boxes.size() % 4 != 0 || cycle.size() != 3,
+            path + " is not a global-local cycle checkpoint");
+    for (std::size_t i = 0; i < crack.size(); i += 2)
+      s.crack.push_back({crack[i], crack[i + 1]});
+    for (std::size_t i = 0; i < boxes.size(); i += 4)
+      s.boxes.push_back({boxes[i], boxes[i + 1], boxes[i + 2], boxes[i + 3]});
+    s.exchanges   = std::size_t(cycle[0]);
+    s.load_factor = cycle[1];
+    s.finished    = cycle[2] != 0.;
+    return s;
+  }
+} // namespace pumpd::coupling
