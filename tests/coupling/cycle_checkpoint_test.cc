@@ -1,0 +1,47 @@
+// The cycle checkpoint (coupling/cycle_checkpoint.h) round-trips exactly and refuses files that
+// are missing or not cycle checkpoints.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+#include "cycle_checkpoint.h"
+
+using namespace pumpd::coupling;
+
+TEST(CycleCheckpoint, RoundTripIsExact)
+{
+  const auto dir = std::filesystem::temp_directory_path() / "pumpd_cycle_checkpoint_test";
+  std::filesystem::create_directories(dir);
+  CycleState s;
+  s.exchanges   = 17;
+  s.load_factor = 1.0999999999999999;
+  s.finished    = true;
+  s.crack       = {{0.1016, 0.}, {0.1016, 0.0254}, {0.10184914583, 0.02683101623}};
+  s.boxes       = {{0.0855, 0.0155, 0.118, 0.048}, {0.0905, 0.0265, 0.123, 0.059}};
+  const std::string file = (dir / "checkpoint.h5").string();
+  write_cycle_checkpoint(file, s);
+  const auto r = read_cycle_checkpoint(file);
+  EXPECT_EQ(r.exchanges, s.exchanges);
+  EXPECT_EQ(r.load_factor, s.load_factor);
+  EXPECT_EQ(r.finished, s.finished);
+  ASSERT_EQ(r.crack.size(), s.crack.size());
+  for (std::size_t k = 0; k < s.crack.size(); ++k)
+    {
+      EXPECT_EQ(r.crack[k].x, s.crack[k].x);
+      EXPECT_EQ(r.crack[k].y, s.crack[k].y);
+    }
+  ASSERT_EQ(r.boxes.size(), s.boxes.size());
+  EXPECT_EQ(r.boxes[1].y_max, s.boxes[1].y_max);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(CycleCheckpoint, RefusesMissingOrForeignFiles)
+{
+  EXPECT_THROW(read_cycle_checkpoint("/nonexistent/checkpoint.h5"), std::runtime_error);
+  const auto file = (std::filesystem::temp_directory_path() / "pumpd_not_a_checkpoint.h5").string();
+  std::ofstream(file) << "not hdf5\n";
+  EXPECT_THROW(read_cycle_checkpoint(file), std::runtime_error);
+  std::filesystem::remove(file);
+}
