@@ -33,8 +33,13 @@ namespace pumpd::coupling
     return clearance < s.near_distance ? 0.5 * s.max_advance : s.max_advance;
   }
 
-  ExchangeController::Decision ExchangeController::judge(double advance, double allowed)
+  ExchangeController::Decision ExchangeController::judge(double advance, double allowed, bool arrives)
   {
+    if (arrives && advance > 0. && advance <= allowed)
+      {
+        accepted = lambda;
+        return Decision::accept;
+      }
     if (advance > allowed)
       {
         if (0.5 * dlambda >= s.min_load_increment)
@@ -46,7 +51,7 @@ namespace pumpd::coupling
         accepted = lambda;
         return Decision::truncate;
       }
-    if (advance >= s.min_advance)
+    if (advance >= std::min(s.min_advance, 0.5 * allowed))
       {
         accepted = lambda;
         return Decision::accept;

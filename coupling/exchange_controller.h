@@ -3,12 +3,13 @@
 // The load is a factor lambda of the critical load P_c at which the global solution has G = G_c
 // at the tip (LEFM, so P_c is known before the PD run). Within one exchange the PD box is driven
 // at lambda = first, first + dlambda, ... (each a quasi-static PD state) until its crack grows:
-//  - advance < min_advance:        raise lambda by dlambda (stop at max_load_factor: the load is
-//                                  too small to grow the crack, the run says so);
+//  - advance < min(min_advance, allowed / 2): raise lambda by dlambda (stop at max_load_factor:
+//    the load is too small to grow the crack, the run says so);
 //  - advance > the allowed advance: repeat the sub-step from the state before it with dlambda
-//                                  halved, down to min_load_increment, then accept the first
-//                                  allowed length of the path (truncated);
-//  - otherwise: accept. The next exchange starts one increment below the accepted lambda.
+//    halved, down to min_load_increment, then accept the first allowed length of the path
+//    (truncated);
+//  - otherwise, or when the advance reaches a hole or the outline: accept. The next exchange
+//    starts one increment below the accepted lambda.
 // The allowed advance is max_advance, halved while the tip is within near_distance of a hole or
 // the body's outline: near them the crack exchanges more often (what the reference had to do by
 // hand for Case III).
@@ -23,7 +24,7 @@ namespace pumpd::coupling
     double min_load_increment = 0.005; ///< dlambda is not halved below this
     double max_load_factor    = 3.;    ///< no growth up to here: the run stops
     double max_advance        = 0.008; ///< da_max per exchange [m]
-    double min_advance        = 0.001; ///< an advance below this is no growth [m]
+    double min_advance        = 0.004; ///< an advance below this is no growth [m]
     double near_distance      = 0.008; ///< closer to a hole or the outline: da_max / 2 [m]
   };
 
@@ -47,7 +48,9 @@ namespace pumpd::coupling
     /// The allowed advance for a tip `clearance` [m] from the nearest hole or outline.
     double allowed_advance(double clearance) const;
     /// Judges the advance [m] the PD run reached at the current lambda, and sets the next lambda.
-    Decision judge(double advance, double allowed);
+    /// An advance that `arrives` at a hole or the outline is accepted whatever its length (the
+    /// crack cannot grow further there).
+    Decision judge(double advance, double allowed, bool arrives = false);
     double   load_factor() const { return lambda; }
     double   increment() const { return dlambda; }
     /// Continue after a restart from the lambda of the last accepted exchange.

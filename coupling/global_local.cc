@@ -67,15 +67,10 @@ namespace pumpd::coupling
                                  " m): a shorter advance is within the noise of the extracted tip");
     }
 
-    /// The initial crack: inside the body, clear of the holes, one tip (an edge crack).
+    /// The initial crack: inside the body, clear of the holes (global::Crack checks both), one tip.
     global::Crack checked_crack(const geometry::Polyline &vertices, const geometry::Body &body)
     {
       global::Crack crack = initial_crack(vertices, body);
-      for (std::size_t k = 0; k + 1 < vertices.size(); ++k)
-        for (const auto &hole : body.holes)
-          if (geometry::segment_meets_disk(vertices[k], vertices[k + 1], hole))
-            throw InvalidParameter("Initial crack", to_text(vertices),
-                                   "passes through the hole at " + to_text(hole.centre) + ": a crack must start clear of the holes");
       if (crack.tips().size() != 1)
         throw InvalidParameter("Initial crack", to_text(vertices),
                                "must be an edge crack (one end on the outline, one tip): the cycle grows one tip");
@@ -383,7 +378,9 @@ namespace pumpd::coupling
             record.seconds_extraction += seconds_since(t);
             if (!branching.empty())
               break;
-            decision = controller.judge(increment.length(), allowed);
+            const bool arrives = increment.path.size() > 1 &&
+                                 !arrive(increment.path, body, p.hole_margin, p.horizon).reason.empty();
+            decision = controller.judge(increment.length(), allowed, arrives);
             out << "    PD at " << std::setprecision(4) << lambda << " P_c: " << relaxed.iterations
                 << " DR iterations, advance " << increment.length() << " m -> " << to_text(decision) << "\n"
                 << std::setprecision(6);

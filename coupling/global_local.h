@@ -53,7 +53,7 @@ namespace pumpd::coupling
     // Cycle.
     BoxSettings        box;              ///< horizon and spacing are set from the above
     ExchangeSettings   exchange;
-    std::size_t        max_exchanges    = 60;
+    std::size_t        max_exchanges    = 200;
     double             max_crack_length = 0.3;
     double             hole_margin      = 0.001;
     double             reference_box_area = 0.127 * 0.1778; ///< the fixed box of Ni et al. 2019 [m^2]

@@ -159,11 +159,12 @@ namespace pumpd::coupling
     entry(prm, "Maximum load factor", "3", Patterns::Double(0., 100.),
           "No growth up to lambda = this: the run stops (the load is too small), in [First load factor, 100].");
     entry(prm, "Maximum advance", "0.008", Patterns::Double(0.), "da_max: the longest crack advance per exchange [m], > 0.");
-    entry(prm, "Minimum advance", "0.001", Patterns::Double(0.),
-          "An advance below this is no growth [m], at least two PD spacings and at most da_max / 2.");
+    entry(prm, "Minimum advance", "0.004", Patterns::Double(0.),
+          "An advance below this is no growth [m], at least two PD spacings and at most da_max / 2. A short "
+          "advance is mostly straight ahead: the increment must be long enough for the PD crack to turn.");
     entry(prm, "Near distance", "0.008", Patterns::Double(0., 1.),
           "Within this of a hole or the outline the advance per exchange is da_max / 2 [m], in [0, 1].");
-    entry(prm, "Maximum exchanges", "60", Patterns::Integer(1), "Global-local exchanges at most, >= 1.");
+    entry(prm, "Maximum exchanges", "200", Patterns::Integer(1), "Global-local exchanges at most, >= 1.");
     entry(prm, "Maximum crack length", "0.3", Patterns::Double(0.), "Stop when the crack polyline is this long [m], > 0.");
     entry(prm, "Hole margin", "0.001", Patterns::Double(0., 1.), "A tip stops this far [m] from a hole's circle, in [0, 1].");
     entry(prm, "Reference box area", "0.02258", Patterns::Double(0.),

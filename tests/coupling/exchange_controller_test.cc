@@ -65,6 +65,15 @@ TEST(ExchangeController, SaysWhenTheLoadIsTooSmall)
   EXPECT_NEAR(c.load_factor(), 1.5, 1e-12);
 }
 
+TEST(ExchangeController, AcceptsAShortAdvanceThatArrivesAtAHole)
+{
+  ExchangeController c(settings());
+  c.start();
+  EXPECT_EQ(c.judge(0.0005, 0.008), D::raise);
+  EXPECT_EQ(c.judge(0.0005, 0.008, true), D::accept);
+  EXPECT_EQ(c.judge(0., 0.008, true), D::raise); // no advance at all: not an arrival
+}
+
 TEST(ExchangeController, ExchangesMoreOftenNearAHoleOrTheOutline)
 {
   ExchangeController c(settings());
