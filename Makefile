@@ -3,7 +3,7 @@
 #   make test                          install what is missing, configure, build, ctest (no bench/study)
 # Also: make bench, make study (the long labels), make clean.
 BUILD ?= build
-SCENE ?= prm/pd-edge-crack.prm
+SCENE ?= prm/ingraffea-case2.prm
 JOBS  ?= 2
 
 .PHONY: run test bench study deps configure build clean

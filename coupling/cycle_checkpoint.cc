@@ -48,13 +48,16 @@ namespace pumpd::coupling
     const std::string partial = path + ".partial";
     const hid_t       file    = H5Fcreate(partial.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
     fail_if(file < 0, "cannot create " + partial);
-    std::vector<double> crack, boxes;
+    std::vector<double> crack, boxes, refined;
     for (const auto &p : state.crack)
       crack.insert(crack.end(), {p.x, p.y});
+    for (const auto &p : state.refined_at)
+      refined.insert(refined.end(), {p.x, p.y});
     for (const auto &b : state.boxes)
       boxes.insert(boxes.end(), {b.x_min, b.y_min, b.x_max, b.y_max});
     write_doubles(file, "crack", crack);
     write_doubles(file, "boxes", boxes);
+    write_doubles(file, "refined_at", refined);
     write_doubles(file, "cycle", {double(state.exchanges), state.load_factor, state.finished ? 1. : 0.});
     H5Fclose(file);
     std::filesystem::rename(partial, path);
@@ -66,11 +69,12 @@ namespace pumpd::coupling
     const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
     fail_if(file < 0, "cannot open " + path);
     CycleState          s;
-    std::vector<double> crack, boxes, cycle;
+    std::vector<double> crack, boxes, refined, cycle;
     try
       {
         crack = read_doubles(file, "crack");
-        boxes = read_doubles(file, "boxes");
+        boxes   = read_doubles(file, "boxes");
+        refined = read_doubles(file, "refined_at");
         cycle = read_doubles(file, "cycle");
       }
     catch (...)
@@ -79,12 +83,14 @@ namespace pumpd::coupling
         throw;
       }
     H5Fclose(file);
-    fail_if(crack.size() < 4 || crack.size() % 2 != 0 || boxes.size() % 4 != 0 || cycle.size() != 3,
+    fail_if(crack.size() < 4 || crack.size() % 2 != 0 || boxes.size() % 4 != 0 || refined.size() % 2 != 0 || cycle.size() != 3,
             path + " is not a global-local cycle checkpoint");
     for (std::size_t i = 0; i < crack.size(); i += 2)
       s.crack.push_back({crack[i], crack[i + 1]});
     for (std::size_t i = 0; i < boxes.size(); i += 4)
       s.boxes.push_back({boxes[i], boxes[i + 1], boxes[i + 2], boxes[i + 3]});
+    for (std::size_t i = 0; i < refined.size(); i += 2)
+      s.refined_at.push_back({refined[i], refined[i + 1]});
     s.exchanges   = std::size_t(cycle[0]);
     s.load_factor = cycle[1];
     s.finished    = cycle[2] != 0.;

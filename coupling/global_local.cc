@@ -220,6 +220,8 @@ namespace pumpd::coupling
           throw InvalidParameter("Resume", "true", "needs an output directory holding checkpoint.h5");
         cycle = read_cycle_checkpoint(checkpoint);
         crack.emplace(cycle.crack, body, 1e-9);
+        for (const auto &x : cycle.refined_at)
+          refine_at_tips(tria, {global::Tip{x, {1., 0.}, 0}}, p.refinement_radius, p.refinement_levels);
         policy.restore(cycle.boxes);
         controller.restore(cycle.load_factor);
         out << "resuming after exchange " << cycle.exchanges << ": crack " << crack->length() << " m\n";
@@ -284,6 +286,7 @@ namespace pumpd::coupling
         // 1. Global solve at the reference load; the critical load from G = G_c.
         auto t = Clock::now();
         refine_at_tips(tria, crack->tips(), p.refinement_radius, p.refinement_levels);
+        cycle.refined_at.push_back(crack->tips().front().position);
         problem.set_crack(crack);
         problem.setup();
         problem.assemble();
@@ -441,7 +444,11 @@ namespace pumpd::coupling
               }
             write_path(p.output_directory + "/crack_path.csv", crack->vertices());
             write_boxes(p.output_directory + "/boxes.csv", policy.history());
-            cycle = {n + 1, controller.load_factor(), !stop.empty(), crack->vertices(), policy.history()};
+            cycle.exchanges   = n + 1;
+            cycle.load_factor = controller.load_factor();
+            cycle.finished    = !stop.empty();
+            cycle.crack       = crack->vertices();
+            cycle.boxes       = policy.history();
             write_cycle_checkpoint(checkpoint, cycle);
           }
 

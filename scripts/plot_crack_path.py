@@ -1,8 +1,9 @@
 #!/usr/bin/python3
-"""Crack path of a lefm-growth run as a PNG: scripts/plot_crack_path.py <output dir> -> <dir>/crack_path.png.
+"""Crack path of a run as a PNG: scripts/plot_crack_path.py <output dir> -> <dir>/crack_path.png.
 
 Reads what the scene wrote into the directory: crack_path.csv (our path), body.csv (outline,
-holes, supports, load point) and, where the scene had a published path, reference_path.csv.
+holes, supports, load point), where the scene had a published path reference_path.csv, and for
+a global-local run boxes.csv (every PD box, drawn light to dark blue as the run goes on).
 Run it with /usr/bin/python3 (Debian's python3-matplotlib).
 """
 import csv
@@ -38,11 +39,23 @@ for shape, x0, y0, x1, y1 in body:
     elif shape == "load":
         ax.annotate("", xy=(x0, y0), xytext=(x0, y0 + 18), arrowprops=dict(arrowstyle="->", color="dimgray", lw=1.5))
 
+boxes = f"{directory}/boxes.csv"
+coupled = os.path.exists(boxes)
+if coupled:
+    with open(boxes) as f:
+        rows = [r for r in csv.DictReader(f) if r["moved"] == "1"]
+    for k, r in enumerate(rows):
+        x0, y0, x1, y1 = (1e3 * float(r[c]) for c in ("x_min_m", "y_min_m", "x_max_m", "y_max_m"))
+        shade = plt.cm.Blues(0.3 + 0.7 * k / max(1, len(rows) - 1))
+        ax.add_patch(Rectangle((x0, y0), x1 - x0, y1 - y0, fill=False, color=shade, lw=0.9,
+                               label="PD boxes (light: first, dark: last)" if k == 0 else None))
+
 reference = f"{directory}/reference_path.csv"
 if os.path.exists(reference):
-    ax.plot(*path(reference), color="tab:blue", lw=1.2, label="published PUM-PD path")
+    ax.plot(*path(reference), color="tab:green", lw=1.2, label="published PUM-PD path")
 x, y = path(f"{directory}/crack_path.csv")
-ax.plot(x, y, color="tab:red", lw=1.6, marker=".", ms=3, label="LEFM (maximum hoop stress)")
+ax.plot(x, y, color="tab:red", lw=1.6, marker=".", ms=3,
+        label="coupled PUM/PD (pumpd)" if coupled else "LEFM (maximum hoop stress)")
 ax.plot(x[-1], y[-1], "o", color="tab:red", ms=5)
 
 ax.set_aspect("equal")
