@@ -296,6 +296,7 @@ namespace pumpd::coupling
         record.tip            = tip.position;
         record.crack_length   = length;
         record.dofs           = problem.n_dofs();
+        record.enriched_dofs  = problem.n_enriched_dofs();
         if (sif.k1 <= 0.)
           {
             result.stop_reason = "the crack closes under the load (K_I <= 0)";
@@ -494,6 +495,20 @@ namespace pumpd::coupling
         << "pumpd-metric coupling.seconds_point_evaluation " << seconds[1] << "\n"
         << "pumpd-metric coupling.seconds_pd " << seconds[2] << "\n"
         << "pumpd-metric coupling.seconds_extraction " << seconds[3] << "\n";
+    // What the scene modelled, against the whole beam: PD nodes over a full-domain PD lattice of
+    // the same spacing (body area / h^2), enriched over all global unknowns (last solve).
+    double pd_nodes = 0.;
+    for (const auto &r : result.exchanges)
+      pd_nodes += double(r.pd_nodes) / double(result.exchanges.size());
+    double body_area = body.outline.width() * body.outline.height();
+    for (const auto &hole : body.holes)
+      body_area -= 3.14159265358979323846 * hole.radius * hole.radius;
+    if (!result.exchanges.empty())
+      out << "pumpd-metric scene.pd_nodes_over_fullpd_nodes " << pd_nodes / (body_area / (h * h)) << "\n"
+          << "pumpd-metric scene.enriched_dof_fraction "
+          << double(result.exchanges.back().enriched_dofs) / double(result.exchanges.back().dofs) << "\n"
+          << "pumpd-metric coupling.global_dofs " << result.exchanges.back().dofs << "\n";
+    out << "pumpd-metric coupling.seconds_total " << result.seconds << "\n";
     out << "pumpd-metric coupling.box_area_ratio " << result.mean_box_area / p.reference_box_area << "\n"
         << "pumpd-metric coupling.pd_node_steps " << result.pd_node_steps << "\n"
         << "end: " << result.stop_reason << "; crack " << crack->length() << " m, tip at "

@@ -74,7 +74,7 @@ namespace pumpd::coupling
     std::string     decision;                            ///< accept | truncate | ...
     geometry::Box   box;
     std::size_t     pd_nodes = 0, pd_iterations = 0, substeps = 0, repeats = 0;
-    unsigned int    dofs = 0;
+    unsigned int    dofs = 0, enriched_dofs = 0;
     double          seconds_global = 0., seconds_point_evaluation = 0., seconds_pd = 0., seconds_extraction = 0.;
   };
 

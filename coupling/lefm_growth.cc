@@ -249,6 +249,8 @@ namespace pumpd::coupling
       }
     result.path    = crack->vertices();
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    out << "pumpd-metric lefm.seconds_total " << result.seconds << "\n"
+        << "pumpd-metric lefm.global_dofs " << (result.steps.empty() ? 0u : result.steps.back().dofs) << "\n";
     if (!reference.empty())
       {
         result.published_deviation = directed_max_distance(reference, result.path);
