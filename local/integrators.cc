@@ -46,42 +46,50 @@ namespace pumpd::local
     check_finite(pd, s);
   }
 
-  void VelocityVerlet::step(State &s, const BoundaryLayer &layer, double ramp_end) const
+  void VelocityVerlet::step(State &s, const BoundaryLayer &layer, double ramp_end,
+                            const std::vector<const RegionDisplacement *> &regions) const
   {
-    const auto  &free = pd.free_mask();
-    const auto  &bl   = pd.boundary_layer();
-    const double k    = 0.5 * dt / pd.material().parameters().density;
+    const auto  &free_x = pd.free_mask_x();
+    const auto  &free_y = pd.free_mask_y();
+    const auto  &cn     = pd.constrained_nodes();
+    const double k      = 0.5 * dt / pd.material().parameters().density;
 
-    std::vector<double> fx0(bl.size()), fy0(bl.size()), ux0(bl.size()), uy0(bl.size());
-    for (std::size_t n = 0; n < bl.size(); ++n)
+    std::vector<double> fx0(cn.size()), fy0(cn.size()), ux0(cn.size()), uy0(cn.size());
+    for (std::size_t n = 0; n < cn.size(); ++n)
       {
-        fx0[n] = s.fx[bl[n]];
-        fy0[n] = s.fy[bl[n]];
-        ux0[n] = s.ux[bl[n]];
-        uy0[n] = s.uy[bl[n]];
+        fx0[n] = s.fx[cn[n]];
+        fy0[n] = s.fy[cn[n]];
+        ux0[n] = s.ux[cn[n]];
+        uy0[n] = s.uy[cn[n]];
       }
 
     const std::size_t n = s.ux.size();
     for (std::size_t i = 0; i < n; ++i)
       {
-        s.vx[i] = free[i] * (s.vx[i] + k * s.fx[i]);
-        s.vy[i] = free[i] * (s.vy[i] + k * s.fy[i]);
+        s.vx[i] = free_x[i] * (s.vx[i] + k * s.fx[i]);
+        s.vy[i] = free_y[i] * (s.vy[i] + k * s.fy[i]);
         s.ux[i] += dt * s.vx[i];
         s.uy[i] += dt * s.vy[i];
       }
     layer.apply(s, ramp_end);
+    for (const auto *r : regions)
+      r->apply(s, ramp_end);
     pd.compute_forces(s);
     for (std::size_t i = 0; i < n; ++i)
       {
-        s.vx[i] = free[i] * (s.vx[i] + k * s.fx[i]);
-        s.vy[i] = free[i] * (s.vy[i] + k * s.fy[i]);
+        s.vx[i] = free_x[i] * (s.vx[i] + k * s.fx[i]);
+        s.vy[i] = free_y[i] * (s.vy[i] + k * s.fy[i]);
       }
 
-    // Work of the layer: the force it applies is minus the bond force on its nodes.
+    // Work of the constraints: the force they apply is minus the bond force on the prescribed
+    // components (a free component's share is zero: it is not prescribed).
     double work = 0.;
-    for (std::size_t m = 0; m < bl.size(); ++m)
-      work -= 0.5 * ((fx0[m] + s.fx[bl[m]]) * (s.ux[bl[m]] - ux0[m]) +
-                     (fy0[m] + s.fy[bl[m]]) * (s.uy[bl[m]] - uy0[m]));
+    for (std::size_t m = 0; m < cn.size(); ++m)
+      {
+        const std::size_t i = cn[m];
+        work -= 0.5 * ((1. - free_x[i]) * (fx0[m] + s.fx[i]) * (s.ux[i] - ux0[m]) +
+                       (1. - free_y[i]) * (fy0[m] + s.fy[i]) * (s.uy[i] - uy0[m]));
+      }
     s.external_work += pd.node_volume() * work;
     s.time += dt;
     ++s.step;
@@ -104,7 +112,8 @@ namespace pumpd::local
   RelaxationResult DynamicRelaxation::solve(State &s) const
   {
     const auto       &nodes  = model.nodes();
-    const auto       &free   = model.free_mask();
+    const auto       &free_x = model.free_mask_x();
+    const auto       &free_y = model.free_mask_y();
     const double      lambda = model.stiffness_scale();
     const std::size_t n      = s.ux.size();
     std::vector<double> fx_old(n, 0.), fy_old(n, 0.);
@@ -118,7 +127,7 @@ namespace pumpd::local
         double f2 = 0., u2 = 0.;
         for (std::size_t i : nodes)
           {
-            f2 += free[i] * (s.fx[i] * s.fx[i] + s.fy[i] * s.fy[i]);
+            f2 += free_x[i] * s.fx[i] * s.fx[i] + free_y[i] * s.fy[i] * s.fy[i];
             u2 += s.ux[i] * s.ux[i] + s.uy[i] * s.uy[i];
           }
         result.iterations = it;
@@ -132,13 +141,13 @@ namespace pumpd::local
           {
             if (it == 0) // v^{1/2} = F^0 / (2 Lambda)
               {
-                s.vx[i] = free[i] * s.fx[i] / (2. * lambda);
-                s.vy[i] = free[i] * s.fy[i] / (2. * lambda);
+                s.vx[i] = free_x[i] * s.fx[i] / (2. * lambda);
+                s.vy[i] = free_y[i] * s.fy[i] / (2. * lambda);
               }
             else
               {
-                s.vx[i] = free[i] * ((2. - damping) * s.vx[i] + 2. * s.fx[i] / lambda) / (2. + damping);
-                s.vy[i] = free[i] * ((2. - damping) * s.vy[i] + 2. * s.fy[i] / lambda) / (2. + damping);
+                s.vx[i] = free_x[i] * ((2. - damping) * s.vx[i] + 2. * s.fx[i] / lambda) / (2. + damping);
+                s.vy[i] = free_y[i] * ((2. - damping) * s.vy[i] + 2. * s.fy[i] / lambda) / (2. + damping);
               }
             s.ux[i] += s.vx[i];
             s.uy[i] += s.vy[i];
@@ -150,8 +159,6 @@ namespace pumpd::local
         double num = 0., den = 0.;
         for (std::size_t i : nodes)
           {
-            if (free[i] == 0.)
-              continue;
             const auto local = [&](double f, double f0, double v, double u) {
               if (v == 0.)
                 return;
@@ -159,8 +166,10 @@ namespace pumpd::local
               num += u * k1 * u;
               den += u * u;
             };
-            local(s.fx[i], fx_old[i], s.vx[i], s.ux[i]);
-            local(s.fy[i], fy_old[i], s.vy[i], s.uy[i]);
+            if (free_x[i] != 0.)
+              local(s.fx[i], fx_old[i], s.vx[i], s.ux[i]);
+            if (free_y[i] != 0.)
+              local(s.fy[i], fy_old[i], s.vy[i], s.uy[i]);
           }
         damping = (den > 0. && num > 0.) ? std::min(1.9, 2. * std::sqrt(num / den)) : 0.;
       }

@@ -1,10 +1,12 @@
 // Time integration of rho u'' = f(u): velocity Verlet for dynamics, adaptive dynamic relaxation
-// (Kilic & Madenci 2010) for quasi-static states. The boundary layer is prescribed, every other
-// material node moves. Both check the state after each force evaluation and throw
+// (Kilic & Madenci 2010) for quasi-static states. The boundary layer and the fixed components of
+// prescribed regions are prescribed (PdModel::free_mask_x / free_mask_y), every other component of
+// a material node moves. Both check the state after each force evaluation and throw
 // NonFiniteState on a NaN or infinity.
 #pragma once
 
 #include <cstddef>
+#include <vector>
 
 #include "boundary_layer.h"
 #include "model.h"
@@ -23,9 +25,12 @@ namespace pumpd::local
     /// Forces at the current state; call once before the first step (and after a restart
     /// only if the checkpoint did not carry them).
     void initialise(State &s) const;
-    /// Advances one step; the layer moves to its value at ramp_end, and the work it does on the
-    /// body (trapezoidal rule on its reaction force) is added to s.external_work.
-    void step(State &s, const BoundaryLayer &layer, double ramp_end) const;
+    /// Advances one step; the layer and the given prescribed regions move to their values at
+    /// ramp_end (a region not given keeps its displacement), and the work all prescribed
+    /// components do on the body (trapezoidal rule on their reaction forces) is added to
+    /// s.external_work.
+    void step(State &s, const BoundaryLayer &layer, double ramp_end,
+              const std::vector<const RegionDisplacement *> &regions = {}) const;
 
   private:
     const PdModel &pd;
@@ -35,7 +40,7 @@ namespace pumpd::local
   struct RelaxationResult
   {
     std::size_t iterations = 0;
-    double      residual   = 0.; ///< |f_free| / (stiffness scale |u|)
+    double      residual   = 0.; ///< |f_free| / (stiffness scale |u - u_rigid|), u_rigid: best-fit rigid motion
     bool        converged  = false;
   };
 
@@ -45,7 +50,8 @@ namespace pumpd::local
     /// tolerance in [1e-14, 0.5], max_iterations >= 1.
     DynamicRelaxation(const PdModel &model, double tolerance, std::size_t max_iterations);
 
-    /// Relaxes the free nodes to equilibrium with the layer as it is in s. Velocities are
+    /// Relaxes the free components to equilibrium with the prescribed ones (layer, regions) as
+    /// they are in s. Velocities are
     /// fictitious and left at zero on return.
     RelaxationResult solve(State &s) const;
 

@@ -4,6 +4,8 @@
 #include <array>
 #include <cmath>
 #include <sstream>
+#include <string>
+#include <utility>
 
 #include "error.h"
 #include "fast_exp.h"
@@ -57,12 +59,44 @@ namespace pumpd::local
     }
   } // namespace
 
+  PrescribedRegion PrescribedRegion::disk(std::string name, geometry::Point centre, double radius, bool fix_x,
+                                          bool fix_y)
+  {
+    PrescribedRegion r;
+    r.name   = std::move(name);
+    r.centre = centre;
+    r.radius = radius;
+    r.area   = {centre.x - radius, centre.y - radius, centre.x + radius, centre.y + radius};
+    r.fix_x  = fix_x;
+    r.fix_y  = fix_y;
+    return r;
+  }
+
+  PrescribedRegion PrescribedRegion::box(std::string name, const geometry::Box &area, bool fix_x, bool fix_y)
+  {
+    PrescribedRegion r;
+    r.name   = std::move(name);
+    r.area   = area;
+    r.centre = {0.5 * (area.x_min + area.x_max), 0.5 * (area.y_min + area.y_max)};
+    r.fix_x  = fix_x;
+    r.fix_y  = fix_y;
+    return r;
+  }
+
+  bool PrescribedRegion::contains(geometry::Point p) const
+  {
+    if (!area.contains(p))
+      return false;
+    return radius <= 0. || geometry::norm(p - centre) <= radius;
+  }
+
   PdModel::PdModel(const MaterialParameters &material, double horizon, int horizon_ratio,
-                   const Region &region)
+                   const Region &region, const std::vector<PrescribedRegion> &prescribed)
     : mat(material, horizon)
     , grid(region.box, spacing_for(horizon, horizon_ratio), horizon_ratio)
     , st(make_half_stencil(horizon_ratio, mat))
     , reg(region)
+    , regions(prescribed)
   {
     validate(reg);
     const double h = grid.spacing();
@@ -106,6 +140,42 @@ namespace pumpd::local
         else
           free[i] = 1.;
       }
+    free_x = free;
+    free_y = free;
+
+    // Prescribed regions: each fixes its components on the material nodes it contains.
+    for (const auto &r : regions)
+      {
+        const std::string name = r.name.empty() ? std::string("Prescribed region") : r.name;
+        if (!r.fix_x && !r.fix_y)
+          throw InvalidParameter(name, "neither component fixed", "a prescribed region fixes ux, uy or both");
+        if (!std::isfinite(r.radius) || r.radius < 0. || !std::isfinite(r.area.x_min) ||
+            !std::isfinite(r.area.x_max) || !std::isfinite(r.area.y_min) || !std::isfinite(r.area.y_max))
+          throw InvalidParameter(name, "radius " + std::to_string(r.radius) + ", area " + box_text(r.area),
+                                 "must be finite, with radius >= 0");
+        std::vector<std::size_t> in;
+        for (std::size_t i : active_nodes)
+          if (r.contains(grid.position(i)))
+            {
+              in.push_back(i);
+              if (r.fix_x)
+                free_x[i] = 0.;
+              if (r.fix_y)
+                free_y[i] = 0.;
+              free[i] = 0.;
+            }
+        if (in.empty())
+          throw InvalidParameter(name,
+                                 r.radius > 0. ? "disk of radius " + std::to_string(r.radius) + " m at (" +
+                                                   std::to_string(r.centre.x) + ", " + std::to_string(r.centre.y) + ")"
+                                               : "box " + box_text(r.area),
+                                 "holds no PD node (spacing " + std::to_string(h) +
+                                   " m): make it larger or move it onto the body");
+        region_nodes.push_back(std::move(in));
+      }
+    for (std::size_t i : active_nodes)
+      if (free_x[i] == 0. || free_y[i] == 0.)
+        constrained.push_back(i);
 
     // Bonds: exist between material nodes unless the segment passes through a hole.
     for (std::size_t k = 0; k < st.size(); ++k)
@@ -242,6 +312,17 @@ namespace pumpd::local
       s.dissipated += d;
   }
 
+  geometry::Point PdModel::reaction(const State &s, std::size_t r) const
+  {
+    geometry::Point f;
+    for (std::size_t i : region_nodes.at(r))
+      {
+        f.x -= s.fx[i];
+        f.y -= s.fy[i];
+      }
+    return volume * f;
+  }
+
   double PdModel::stable_time_step() const
   {
     return std::sqrt(2. * mat.parameters().density / stiffness);
@@ -277,7 +358,7 @@ namespace pumpd::local
   {
     double e = 0.;
     for (std::size_t i : active_nodes)
-      e += free[i] * (s.vx[i] * s.vx[i] + s.vy[i] * s.vy[i]);
+      e += free_x[i] * s.vx[i] * s.vx[i] + free_y[i] * s.vy[i] * s.vy[i];
     return 0.5 * mat.parameters().density * volume * e;
   }
 

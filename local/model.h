@@ -4,11 +4,15 @@
 // stays clear of every hole; a bond across a pre-existing crack polyline starts broken. Nodes
 // within one horizon of a box edge that lies inside the body form the boundary layer and take
 // prescribed displacements (BoundaryLayer); edges on the body outline are free surfaces.
+// Besides the layer, prescribed regions (PrescribedRegion: supports, loading pads) fix one or both
+// displacement components of the nodes in a disk or box (RegionDisplacement sets their values); a
+// roller fixes uy and leaves ux free. The free masks are per component.
 //
 // Units: force densities f [N/m^3], energy densities [J/m^3], energies per unit thickness [J/m].
 #pragma once
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "geometry.h"
@@ -23,6 +27,24 @@ namespace pumpd::local
     geometry::Body                  body;
     geometry::Box                   box;
     std::vector<geometry::Polyline> cracks;
+  };
+
+  /// A set of nodes with prescribed displacement components, besides the boundary layer: the
+  /// material nodes inside `area` and, for a disk, within `radius` of `centre` (area is then the
+  /// disk's bounding box). fix_x / fix_y say which components are prescribed: a pin fixes both, a
+  /// roller on a horizontal edge only uy. The values come from RegionDisplacement (boundary_layer.h)
+  /// or stay where the state has them.
+  struct PrescribedRegion
+  {
+    std::string     name;         ///< for messages ("Pin support", ...)
+    geometry::Box   area;
+    geometry::Point centre;
+    double          radius = 0.;  ///< > 0: a disk; 0: the box `area`
+    bool            fix_x = true, fix_y = true;
+
+    static PrescribedRegion disk(std::string name, geometry::Point centre, double radius, bool fix_x, bool fix_y);
+    static PrescribedRegion box(std::string name, const geometry::Box &area, bool fix_x, bool fix_y);
+    bool                    contains(geometry::Point p) const;
   };
 
   /// Everything that changes in a run. Arrays use the lattice's storage index.
@@ -40,9 +62,11 @@ namespace pumpd::local
   {
   public:
     /// horizon_ratio m = delta / h. Throws InvalidParameter (h <= 0, m < 2, box not inside the
-    /// body, crack polyline outside the body) with the parameter's name and allowed range.
+    /// body, crack polyline outside the body, a prescribed region that fixes no component, has a
+    /// negative or non-finite radius, or holds no material node) with the parameter's name and
+    /// allowed range.
     PdModel(const MaterialParameters &material, double horizon, int horizon_ratio,
-            const Region &region);
+            const Region &region, const std::vector<PrescribedRegion> &prescribed = {});
 
     const LiptonMaterial &material() const { return mat; }
     const Lattice        &lattice() const { return grid; }
@@ -54,8 +78,22 @@ namespace pumpd::local
     const std::vector<std::size_t> &nodes() const { return active_nodes; }
     /// Nodes of the boundary layer (a subset of nodes()).
     const std::vector<std::size_t> &boundary_layer() const { return layer_nodes; }
-    /// 1 for nodes that move under the equation of motion, 0 elsewhere (ghosts, holes, layer).
+    /// 1 for nodes whose two components move under the equation of motion, 0 elsewhere (ghosts,
+    /// holes, layer, and nodes of a prescribed region with either component fixed).
     const std::vector<double> &free_mask() const { return free; }
+    /// Per component: 1 where ux (uy) moves under the equation of motion, 0 where it is prescribed
+    /// (layer, prescribed regions fixing it) or there is no node. The integrators use these.
+    const std::vector<double> &free_mask_x() const { return free_x; }
+    const std::vector<double> &free_mask_y() const { return free_y; }
+    /// The prescribed regions as given, and the material nodes of region r (storage order).
+    const std::vector<PrescribedRegion> &prescribed_regions() const { return regions; }
+    const std::vector<std::size_t>      &prescribed_nodes(std::size_t r) const { return region_nodes.at(r); }
+    /// Nodes with at least one prescribed component (layer and regions), in storage order.
+    const std::vector<std::size_t> &constrained_nodes() const { return constrained; }
+    /// Force the constraints exert on the body through the nodes of region r [N/m]: minus the sum
+    /// of the bond force densities times the node volume (in equilibrium it balances them; only
+    /// the fixed components are meaningful). Uses the forces in s (last compute_forces).
+    geometry::Point reaction(const State &s, std::size_t r) const;
 
     /// Zero displacement and velocity, bonds broken where they do not exist or cross a crack.
     State initial_state() const;
@@ -110,7 +148,9 @@ namespace pumpd::local
     std::size_t                plane_words;
     std::vector<std::uint64_t> exists;   ///< static bond existence bits, layout of State::broken
     std::vector<std::uint64_t> precrack; ///< bonds cut by the initial cracks
-    std::vector<std::size_t>   active_nodes, layer_nodes;
-    std::vector<double>        free;
+    std::vector<std::size_t>   active_nodes, layer_nodes, constrained;
+    std::vector<double>        free, free_x, free_y;
+    std::vector<PrescribedRegion>         regions;
+    std::vector<std::vector<std::size_t>> region_nodes;
   };
 } // namespace pumpd::local
