@@ -19,6 +19,7 @@
 #include <chrono>
 #include <cmath>
 #include <fstream>
+#include <iostream>
 #include <map>
 #include <sstream>
 
@@ -55,6 +56,20 @@ namespace pumpd::global
     require_positive("Young's modulus", material.youngs_modulus);
     require_range("Poisson's ratio", material.poisson_ratio, 0., 0.5 - 1e-12,
                   "must be in [0, 0.5) (0.5 is incompressible: locking)");
+    // Q1 elements in plane strain lock as lambda / mu = 2 nu / (1 - 2 nu) grows (50 at nu = 0.49,
+    // 5000 at 0.4999): the computed field is too stiff, K_I too small, with no error raised.
+    if (material.plane_strain && material.poisson_ratio > 0.49)
+      {
+        std::ostringstream w;
+        w << "warning: Poisson's ratio = " << material.poisson_ratio
+          << " in plane strain: the bilinear (Q1) elements suffer volumetric locking above 0.49 "
+             "(lambda / mu = "
+          << 2. * material.poisson_ratio / (1. - 2. * material.poisson_ratio)
+          << "); displacements and stress intensity factors will be too small. Remedy: use nu <= 0.49, or plane "
+             "stress, or a much finer mesh";
+        warning_list.push_back(w.str());
+        std::cerr << warning_list.back() << std::endl;
+      }
   }
 
   EnrichedElasticity::~EnrichedElasticity() = default;

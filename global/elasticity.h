@@ -96,10 +96,16 @@ namespace pumpd::global
   {
   public:
     /// The triangulation must outlive this object. Throws InvalidParameter for a material out
-    /// of range (E <= 0, nu not in [0, 0.5)).
+    /// of range (E <= 0, nu not in [0, 0.5)). A nearly incompressible material in plane strain
+    /// (nu > 0.49) is accepted with a warning (warnings(), also printed to std::cerr): bilinear
+    /// elements lock volumetrically there and the displacements and K_I come out too small.
     EnrichedElasticity(dealii::Triangulation<2, 2> &triangulation, const ElasticMaterial &material,
                        const EnrichmentSettings &settings);
     ~EnrichedElasticity();
+
+    /// Diagnostics about the problem as set up (e.g. volumetric locking), one sentence each;
+    /// empty when there is nothing to warn about.
+    const std::vector<std::string> &warnings() const { return warning_list; }
 
     /// The crack (none: plain elasticity, no enrichment assembled).
     void set_crack(std::optional<Crack> crack);
@@ -157,6 +163,7 @@ namespace pumpd::global
     struct Impl;
 
   private:
-    std::unique_ptr<Impl> impl;
+    std::unique_ptr<Impl>    impl;
+    std::vector<std::string> warning_list;
   };
 } // namespace pumpd::global
