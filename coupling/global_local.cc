@@ -470,6 +470,9 @@ namespace pumpd::coupling
           }
       }
 
+    if (result.stop_reason.empty() && cycle.finished) // resumed from the checkpoint of a run that had stopped
+      result.stop_reason = "nothing to resume: the checkpointed run had already stopped after exchange " +
+                           std::to_string(cycle.exchanges) + " (its reason: the last row of load_steps.csv)";
     result.path    = crack->vertices();
     result.boxes   = policy.history();
     result.seconds = seconds_since(t0);
