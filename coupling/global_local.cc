@@ -32,7 +32,6 @@ namespace pumpd::coupling
 
   namespace
   {
-    constexpr double infinity = std::numeric_limits<double>::infinity();
 
     double seconds_since(Clock::time_point t)
     {
