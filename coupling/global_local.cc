@@ -32,7 +32,6 @@ namespace pumpd::coupling
 
   namespace
   {
-
     double seconds_since(Clock::time_point t)
     {
       return std::chrono::duration<double>(Clock::now() - t).count();
