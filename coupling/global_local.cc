@@ -12,6 +12,7 @@
 #include <memory>
 #include <optional>
 #include <ostream>
+#include <sstream>
 
 #include "beam_scene.h"
 #include "boundary_layer.h"
@@ -415,8 +416,11 @@ namespace pumpd::coupling
         if (!branching.empty())
           stop = "crack branching in the PD box, refused: " + branching;
         else if (decision == ExchangeController::Decision::too_small)
-          stop = "the load is too small to grow the crack: no growth up to " +
-                 std::to_string(p.exchange.max_load_factor) + " P_c";
+          {
+            std::ostringstream reason;
+            reason << "the load is too small to grow the crack: no growth up to " << p.exchange.max_load_factor << " P_c";
+            stop = reason.str();
+          }
         else
           {
             const auto arrival = arrive(truncate(increment.path, allowed), body, p.hole_margin, p.horizon);
