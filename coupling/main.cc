@@ -11,6 +11,7 @@
 #include <string>
 
 #include "error.h"
+#include "full_pd.h"
 #include "global_local.h"
 #include "lefm_growth.h"
 #include "parameters.h"
@@ -54,6 +55,8 @@ namespace
       }
     else if (type == "global-local")
       pumpd::coupling::run_global_local(pumpd::coupling::read_global_local(prm), std::cout);
+    else if (type == "full-pd")
+      pumpd::coupling::run_full_pd(pumpd::coupling::read_full_pd(prm), std::cout);
     return 0;
   }
 } // namespace

@@ -22,12 +22,14 @@ namespace pumpd::coupling
   void declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Scene");
-    entry(prm, "Type", "pd-edge-crack", Patterns::Selection("pd-edge-crack|lefm-growth|global-local"),
+    entry(prm, "Type", "pd-edge-crack", Patterns::Selection("pd-edge-crack|lefm-growth|global-local|full-pd"),
                       "Which scene to run. pd-edge-crack: a PD box around a mode-I edge-crack tip, "
                       "its boundary layer driven by the Williams field of a rising K. lefm-growth: "
                       "LEFM crack growth in the Ingraffea beam (XFEM, maximum hoop stress; no PD). "
                       "global-local: the coupled cycle in the Ingraffea beam (XFEM drives a PD box at "
-                      "the tip, the PD damage grows the crack; subsections Peridynamics and Global-local).");
+                      "the tip, the PD damage grows the crack; subsections Peridynamics and Global-local). "
+                      "full-pd: the whole Ingraffea beam as one PD body, supports and load as prescribed "
+                      "PD regions, displacement-controlled (subsections Peridynamics and Full PD).");
     entry(prm, "Output directory", "out", Patterns::DirectoryName(),
                       "Where VTU/PVD, load_steps.csv, checkpoint.h5, crack_path.csv go (created if "
                       "missing). Relative paths in a scene file (this one, Mesh file, Published path) "
@@ -177,6 +179,58 @@ namespace pumpd::coupling
     entry(prm, "Resume", "false", Patterns::Bool(),
           "true: continue from checkpoint.h5 in the output directory (written after every exchange).");
     prm.leave_subsection();
+
+    // Full PD (coupling/full_pd.h): Material and Peridynamics are shared with the other scenes.
+    prm.enter_subsection("Full PD");
+    entry(prm, "Beam outline", "0,0; 0.508,0.2032", Patterns::List(point, 2, 2, ";"),
+          "Lower-left and upper-right corner \"x1,y1; x2,y2\" [m] of the rectangular body; it is also the PD "
+          "box (no boundary layer: every edge is a free surface). meshes/ingraffea-beam-holes.geo: 0,0; 0.508,0.2032.");
+    entry(prm, "Holes", "0.1524,0.06985,0.00635; 0.1524,0.12065,0.00635; 0.1524,0.17145,0.00635",
+          Patterns::List(Patterns::List(Patterns::Double(), 3, 3, ","), 0, Patterns::List::max_int_value, ";"),
+          "Circular holes \"x,y,r; ...\" [m], inside the outline, radius > 0; empty: none. The default is the "
+          "geometry of meshes/ingraffea-beam-holes.geo (Cases II, III).");
+    entry(prm, "Initial crack", "0.1016,0; 0.1016,0.0254", Patterns::List(point, 2, Patterns::List::max_int_value, ";"),
+          "Pre-crack polyline \"x1,y1; x2,y2; ...\" [m] inside the outline (bonds across it start broken); its last "
+          "vertex is the tip the crack is traced from, along its last segment.");
+    entry(prm, "Pin support", "0.0254,0", point, "x,y [m]: the nodes within the support radius have ux = uy = 0.");
+    entry(prm, "Roller support", "0.4826,0", point, "x,y [m]: the nodes within the support radius have uy = 0 (ux free).");
+    entry(prm, "Load point", "0.254,0.2032", point,
+          "x,y [m]: the nodes within the support radius take the prescribed downward displacement d (ux free).");
+    entry(prm, "Support radius", "0", Patterns::Double(0.),
+          "Radius [m] of the pin, roller and load regions, in [0, half the beam's smaller side]; 0: one horizon.");
+    entry(prm, "No-fail radius", "0.04", Patterns::Double(0.),
+          "Bonds within this distance [m] of the pin, roller and load point stay linear elastic (no softening, "
+          "no failure); 0: none, else in [Support radius, half the beam's smaller side]. A point load P gives the "
+          "Flamant stress 2 P / (pi r), above the PD strength (~K_c / sqrt(pi delta), ~10 MPa at delta = 4 mm) "
+          "within a few cm at the beam's failure load: without the zone the pads crush first.");
+    entry(prm, "Crack damage threshold", "0.3", Patterns::Double(0., 1.),
+          "A node with PD damage above this lies on the crack, in [0.05, 0.95] (crack faces reach ~0.41).");
+    entry(prm, "Onset stretch ratio", "0.9", Patterns::Double(0., 1.),
+          "Elastic phase: while no bond near the tip passed its inflection stretch, the relaxed state is "
+          "scaled (linear response) so that the largest stretch ratio Z near the tip reaches this, in [0.001, 1].");
+    entry(prm, "First increment", "0.02", Patterns::Double(0., 1.),
+          "Displacement increment dd / d once bonds soften, in [Minimum increment, Maximum increment].");
+    entry(prm, "Minimum increment", "0.002", Patterns::Double(0., 1.),
+          "Smallest dd / d, in [1e-6, 1]: a step that grows the crack by more than the maximum advance is "
+          "repeated with dd / 2 down to this.");
+    entry(prm, "Maximum increment", "0.05", Patterns::Double(0., 1.), "Largest dd / d, in [Minimum increment, 1].");
+    entry(prm, "Target advance", "0", Patterns::Double(0.),
+          "Crack advance per step the increment aims at [m]: dd <- dd clamp(a_t / growth, 1/2, 2), doubled "
+          "after a step without growth; 0: one horizon.");
+    entry(prm, "Maximum advance", "0", Patterns::Double(0.),
+          "A step growing the crack by more than this [m] is undone and repeated with half the increment; "
+          "0 or at least the target advance; 0: four horizons.");
+    entry(prm, "Maximum displacement", "0.005", Patterns::Double(0.), "Stop at this load-point displacement [m], > 0.");
+    entry(prm, "Maximum steps", "400", Patterns::Integer(1), "Displacement steps at most, >= 1.");
+    entry(prm, "Stall steps", "15", Patterns::Integer(1),
+          "Once the crack has grown, stop after this many steps in a row without growth (the crack stopped), >= 1.");
+    entry(prm, "Hole margin", "0.001", Patterns::Double(0., 1.),
+          "The run stops when the crack comes within this distance [m] of a hole, in [0, 0.1].");
+    entry(prm, "Output interval", "10", Patterns::Integer(1), "Write pd_NNN.vtu every n steps (and the last), >= 1.");
+    entry(prm, "Published path", "", Patterns::Anything(),
+          "Optional CSV of a published path (x,y [m] per line): copied to reference_path.csv and compared "
+          "(symmetric mean and Hausdorff distance over its length). Relative to the current directory.");
+    prm.leave_subsection();
   }
 
   std::string scene_type(ParameterHandler &prm)
@@ -321,6 +375,63 @@ namespace pumpd::coupling
     p.output_interval               = prm.get_integer("Output interval");
     p.published_path                = prm.get("Published path");
     p.resume                        = prm.get_bool("Resume");
+    prm.leave_subsection();
+    return p;
+  }
+} // namespace pumpd::coupling
+
+namespace pumpd::coupling
+{
+  FullPdParameters read_full_pd(ParameterHandler &prm)
+  {
+    FullPdParameters p;
+    p.output_directory = output_directory(prm);
+    prm.enter_subsection("Material");
+    p.material.youngs_modulus  = prm.get_double("Young's modulus");
+    p.material.fracture_energy = prm.get_double("Fracture energy");
+    p.material.density         = prm.get_double("Density");
+    p.material.plane_strain    = prm.get_bool("Plane strain");
+    prm.leave_subsection();
+    prm.enter_subsection("Peridynamics");
+    p.horizon               = prm.get_double("Horizon");
+    p.horizon_ratio         = prm.get_integer("Horizon over spacing");
+    p.material.influence    = local::influence_from_string(prm.get("Influence function"));
+    p.material.break_factor = prm.get_double("Bond break factor");
+    p.tolerance             = prm.get_double("Relaxation tolerance");
+    p.max_iterations        = prm.get_integer("Relaxation max iterations");
+    prm.leave_subsection();
+    prm.enter_subsection("Full PD");
+    const auto corners = dealii::Utilities::split_string_list(prm.get("Beam outline"), ';');
+    const auto lo = to_point(corners[0]), hi = to_point(corners[1]);
+    p.outline = {lo.x, lo.y, hi.x, hi.y};
+    p.holes.clear();
+    for (const auto &hole : dealii::Utilities::split_string_list(prm.get("Holes"), ';'))
+      {
+        const auto v = dealii::Utilities::split_string_list(hole, ',');
+        p.holes.push_back({{dealii::Utilities::string_to_double(v[0]), dealii::Utilities::string_to_double(v[1])},
+                           dealii::Utilities::string_to_double(v[2])});
+      }
+    p.initial_crack.clear();
+    for (const auto &point : dealii::Utilities::split_string_list(prm.get("Initial crack"), ';'))
+      p.initial_crack.push_back(to_point(point));
+    p.pin                 = to_point(prm.get("Pin support"));
+    p.roller              = to_point(prm.get("Roller support"));
+    p.load_point          = to_point(prm.get("Load point"));
+    p.support_radius      = prm.get_double("Support radius");
+    p.no_fail_radius      = prm.get_double("No-fail radius");
+    p.crack_damage        = prm.get_double("Crack damage threshold");
+    p.onset_stretch_ratio = prm.get_double("Onset stretch ratio");
+    p.first_increment     = prm.get_double("First increment");
+    p.min_increment       = prm.get_double("Minimum increment");
+    p.max_increment       = prm.get_double("Maximum increment");
+    p.target_advance      = prm.get_double("Target advance");
+    p.max_advance         = prm.get_double("Maximum advance");
+    p.max_displacement    = prm.get_double("Maximum displacement");
+    p.max_steps           = prm.get_integer("Maximum steps");
+    p.stall_steps         = prm.get_integer("Stall steps");
+    p.hole_margin         = prm.get_double("Hole margin");
+    p.output_interval     = prm.get_integer("Output interval");
+    p.published_path      = prm.get("Published path");
     prm.leave_subsection();
     return p;
   }

@@ -4,6 +4,7 @@
 
 #include <string>
 
+#include "full_pd.h"
 #include "global_local.h"
 #include "lefm_growth.h"
 #include "pd_edge_crack.h"
@@ -25,4 +26,5 @@ namespace pumpd::coupling
   EdgeCrackParameters  read_edge_crack(dealii::ParameterHandler &prm);
   LefmGrowthParameters read_lefm_growth(dealii::ParameterHandler &prm);
   GlobalLocalParameters read_global_local(dealii::ParameterHandler &prm);
+  FullPdParameters      read_full_pd(dealii::ParameterHandler &prm);
 } // namespace pumpd::coupling

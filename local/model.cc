@@ -83,11 +83,12 @@ namespace pumpd::local
     return r;
   }
 
-  bool PrescribedRegion::contains(geometry::Point p) const
+  bool PrescribedRegion::contains(geometry::Point p, double g) const
   {
-    if (!area.contains(p))
+    const geometry::Box grown{area.x_min - g, area.y_min - g, area.x_max + g, area.y_max + g};
+    if (!grown.contains(p))
       return false;
-    return radius <= 0. || geometry::norm(p - centre) <= radius;
+    return radius <= 0. || geometry::norm(p - centre) <= radius + g;
   }
 
   PdModel::PdModel(const MaterialParameters &material, double horizon, int horizon_ratio,
@@ -196,6 +197,35 @@ namespace pumpd::local
                   return geometry::segment_crosses_polyline(a, b, c);
                 }))
               precrack[w] |= std::uint64_t(1) << (i % 64);
+          }
+      }
+
+    // No-fail zones: bonds with an end near a region with elastic_margin >= 0 stay linear.
+    std::vector<char> zone(n, 0);
+    bool              any_zone = false;
+    for (const auto &r : regions)
+      if (r.elastic_margin >= 0.)
+        {
+          if (!std::isfinite(r.elastic_margin))
+            throw InvalidParameter(r.name + " elastic margin", std::to_string(r.elastic_margin), "must be finite");
+          any_zone = true;
+          for (std::size_t i : active_nodes)
+            if (r.contains(grid.position(i), r.elastic_margin))
+              zone[i] = 1;
+        }
+    if (any_zone)
+      {
+        linear_bits.assign(exists.size(), 0);
+        for (std::size_t k = 0; k < st.size(); ++k)
+          {
+            const std::ptrdiff_t off = st.dx[k] + std::ptrdiff_t(grid.stride()) * st.dy[k];
+            for (std::size_t i : active_nodes)
+              if (bond_exists(k, i) && !bit(precrack, k * plane_words, i) && (zone[i] || zone[i + off]))
+                {
+                  linear_bits[k * plane_words + i / 64] |= std::uint64_t(1) << (i % 64);
+                  linear_k.push_back(std::uint32_t(k));
+                  linear_i.push_back(i);
+                }
           }
       }
   }
@@ -310,6 +340,40 @@ namespace pumpd::local
     }
     for (double d : dissipated)
       s.dissipated += d;
+    if (!linear_k.empty())
+      correct_linear_bonds(s);
+  }
+
+  // The kernel gave a S exp(-x) (or 0 where it found the bond broken, failing it now and
+  // dissipating its energy); a no-fail bond gets a S: the difference is added, a failure undone.
+  void PdModel::correct_linear_bonds(State &s) const
+  {
+    const double h = grid.spacing();
+    for (std::size_t b = 0; b < linear_k.size(); ++b)
+      {
+        const std::size_t    k = linear_k[b], i = linear_i[b];
+        const std::ptrdiff_t off = st.dx[k] + std::ptrdiff_t(grid.stride()) * st.dy[k];
+        const std::size_t    j   = i + off;
+        // S and x as the kernel computes them (the same rounding: the undone dissipation cancels).
+        const double inv_r = 1. / (st.length[k] * h), beta_r = mat.beta() * st.length[k] * h;
+        const double S = ((s.ux[j] - s.ux[i]) * st.ex[k] + (s.uy[j] - s.uy[i]) * st.ey[k]) * inv_r;
+        const double x = beta_r * S * S;
+        std::uint64_t &word = s.broken[k * plane_words + i / 64];
+        const std::uint64_t mask = std::uint64_t(1) << (i % 64);
+        double         kernel = 0.;
+        if (word & mask)
+          {
+            word &= ~mask; // failed in this call (no-fail bonds are never left broken)
+            s.dissipated -= 2. * volume * energy_coeff[k] * (1. - exp_negative(x));
+          }
+        else
+          kernel = force_coeff[k] * S * exp_negative(x);
+        const double dF = force_coeff[k] * S - kernel;
+        s.fx[i] += dF * st.ex[k];
+        s.fy[i] += dF * st.ey[k];
+        s.fx[j] -= dF * st.ex[k];
+        s.fy[j] -= dF * st.ey[k];
+      }
   }
 
   geometry::Point PdModel::reaction(const State &s, std::size_t r) const
@@ -349,7 +413,8 @@ namespace pumpd::local
         return;
       const double S = ((s.ux[j] - s.ux[i]) * st.ex[k] + (s.uy[j] - s.uy[i]) * st.ey[k]) /
                        (st.length[k] * h);
-      e += 2. * volume * energy_coeff[k] * (1. - std::exp(-mat.beta() * st.length[k] * h * S * S));
+      const double x = mat.beta() * st.length[k] * h * S * S;
+      e += 2. * volume * energy_coeff[k] * (is_linear(k, i) ? x : 1. - std::exp(-x));
     });
     return e;
   }
@@ -372,7 +437,7 @@ namespace pumpd::local
       all[j] += w;
       const double r = st.length[k] * h;
       const double S = ((s.ux[j] - s.ux[i]) * st.ex[k] + (s.uy[j] - s.uy[i]) * st.ey[k]) / r;
-      if (bit(s.broken, k * plane_words, i) || std::abs(S) > mat.inflection_stretch(r))
+      if (bit(s.broken, k * plane_words, i) || (std::abs(S) > mat.inflection_stretch(r) && !is_linear(k, i)))
         {
           lost[i] += w;
           lost[j] += w;
@@ -406,7 +471,8 @@ namespace pumpd::local
         return;
       const double r = st.length[k] * h;
       const double S = ((s.ux[j] - s.ux[i]) * st.ex[k] + (s.uy[j] - s.uy[i]) * st.ey[k]) / r;
-      const double g = energy_coeff[k] * (1. - std::exp(-mat.beta() * r * S * S));
+      const double x = mat.beta() * r * S * S;
+      const double g = energy_coeff[k] * (is_linear(k, i) ? x : 1. - std::exp(-x));
       w[i] += g;
       w[j] += g;
     });

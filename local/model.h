@@ -41,10 +41,15 @@ namespace pumpd::local
     geometry::Point centre;
     double          radius = 0.;  ///< > 0: a disk; 0: the box `area`
     bool            fix_x = true, fix_y = true;
+    /// >= 0: a no-fail zone. Bonds with an end within this distance [m] of the region (the disk's
+    /// radius, or the box, grown by it) stay linear elastic: force a S instead of a S exp(-beta
+    /// |xi| S^2), never fail, count as intact for damage. A support or load pad concentrates
+    /// stress far beyond the PD strength (~K_c / sqrt(delta)) and would otherwise crush. < 0: none.
+    double elastic_margin = -1.;
 
     static PrescribedRegion disk(std::string name, geometry::Point centre, double radius, bool fix_x, bool fix_y);
     static PrescribedRegion box(std::string name, const geometry::Box &area, bool fix_x, bool fix_y);
-    bool                    contains(geometry::Point p) const;
+    bool                    contains(geometry::Point p, double grown_by = 0.) const;
   };
 
   /// Everything that changes in a run. Arrays use the lattice's storage index.
@@ -100,7 +105,8 @@ namespace pumpd::local
 
     /// Bond forces into s.fx, s.fy (force densities); bonds beyond the break stretch fail and
     /// their energy moves to s.dissipated. Two threads split the rows deterministically: the
-    /// result does not depend on the thread count.
+    /// result does not depend on the thread count. Bonds of no-fail zones (elastic_margin) are
+    /// corrected to the linear force after the kernel, in one serial pass over them.
     void compute_forces(State &s) const;
 
     /// Silling-Askari bound sqrt(2 rho / sum_j c_ij / |xi_ij|) on the Verlet time step.
@@ -121,6 +127,8 @@ namespace pumpd::local
     std::vector<double> energy_density(const State &s) const;
     /// Count of bonds of the half stencil between existing nodes that are not broken.
     std::size_t intact_bonds(const State &s) const;
+    /// Number of bonds (half stencil) kept linear elastic by no-fail zones.
+    std::size_t linear_bond_count() const { return linear_k.size(); }
 
     std::size_t bit_plane_words() const { return plane_words; }
     bool        bond_exists(std::size_t k, std::size_t i) const
@@ -150,6 +158,14 @@ namespace pumpd::local
     std::vector<std::uint64_t> precrack; ///< bonds cut by the initial cracks
     std::vector<std::size_t>   active_nodes, layer_nodes, constrained;
     std::vector<double>        free, free_x, free_y;
+    std::vector<std::uint64_t> linear_bits; ///< no-fail bonds, layout of State::broken (empty: none)
+    std::vector<std::uint32_t> linear_k;    ///< no-fail bonds: stencil offset and node
+    std::vector<std::size_t>   linear_i;
+    void                       correct_linear_bonds(State &s) const;
+    bool                       is_linear(std::size_t k, std::size_t i) const
+    {
+      return !linear_bits.empty() && bit(linear_bits, k * plane_words, i);
+    }
     std::vector<PrescribedRegion>         regions;
     std::vector<std::vector<std::size_t>> region_nodes;
   };

@@ -224,3 +224,35 @@ TEST(PrescribedRegion, BadInputIsRefused)
   RegionDisplacement pad(model, 0);
   expect_invalid([&] { pad.set_target(geometry::Point{INFINITY, 0.}); }, "Left pad displacement", "finite");
 }
+
+// No-fail zone (elastic_margin): bonds near a region stay linear elastic. With the zone covering
+// the whole bar, a pull to 10 times the inflection stretch damages nothing, breaks nothing, and
+// the reaction is the small-strain one scaled (linear response).
+TEST(PrescribedRegion, NoFailZoneStaysLinear)
+{
+  auto regions = pads();
+  regions[0].elastic_margin = 1.; // the whole bar
+  const PdModel model(MaterialParameters{}, delta, m, bar(), regions);
+  EXPECT_GT(model.linear_bond_count(), 0u);
+  const double       big = 10. * model.material().inflection_stretch(delta);
+  const auto         pull = [&](double e) {
+    RegionDisplacement left(model, 0), right(model, 1), pin(model, 2);
+    left.set_target([e](geometry::Point x) { return geometry::Point{e * x.x, 0.}; });
+    right.set_target([e](geometry::Point x) { return geometry::Point{e * x.x, 0.}; });
+    pin.set_target(geometry::Point{0., 0.});
+    State s = model.initial_state();
+    for (const auto *r : {&left, &right, &pin})
+      r->apply(s, 1.);
+    EXPECT_TRUE(DynamicRelaxation(model, 1e-10, 400000).solve(s).converged);
+    return std::make_pair(right.reaction(s).x / e, s);
+  };
+  const auto [small_k, small_s] = pull(strain);
+  const auto [big_k, big_s]     = pull(big);
+  EXPECT_NEAR(big_k / small_k, 1., 1e-6);
+  const auto damage = model.damage(big_s);
+  EXPECT_EQ(*std::max_element(damage.begin(), damage.end()), 0.);
+  EXPECT_EQ(model.intact_bonds(big_s), model.intact_bonds(small_s));
+  EXPECT_NEAR(big_s.dissipated, 0., 1e-9 * model.elastic_energy(big_s)) << "failures undone";
+  // The elastic energy is the linear one: (1/2) k e^2 L scaled with e^2.
+  EXPECT_NEAR(model.elastic_energy(big_s) / model.elastic_energy(small_s), (big / strain) * (big / strain), 1e-4 * (big / strain) * (big / strain));
+}
