@@ -54,7 +54,8 @@ namespace pumpd::coupling
                       "A bond fails for good beyond this multiple (>= 1) of its inflection stretch "
                       "S_c = 1 / sqrt(2 beta |xi|); the decks use 10.");
     entry(prm, "Relaxation tolerance", "1e-6", Patterns::Double(1e-14, 0.5),
-                      "Dynamic relaxation stops when |f| / (k |u|) falls below this, in [1e-14, 0.5].");
+                      "Dynamic relaxation stops when |f| / (k |u - u_rigid|) falls below this (u_rigid: the "
+                      "best-fit rigid motion of the PD body), in [1e-14, 0.5].");
     entry(prm, "Relaxation max iterations", "200000", Patterns::Integer(1),
                       "Upper bound on dynamic relaxation iterations per load step, >= 1.");
     prm.leave_subsection();
