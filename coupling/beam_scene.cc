@@ -156,6 +156,66 @@ namespace pumpd::coupling
     return -b - std::sqrt(b * b - q);
   }
 
+  double clearance(Point x, const geometry::Body &body)
+  {
+    const auto &o = body.outline;
+    double      d = std::min({x.x - o.x_min, o.x_max - x.x, x.y - o.y_min, o.y_max - x.y});
+    for (const auto &hole : body.holes)
+      d = std::min(d, geometry::norm(x - hole.centre) - hole.radius);
+    return d;
+  }
+
+  DamageField damage_field(const local::PdModel &model, const local::State &s)
+  {
+    const auto &lattice = model.lattice();
+    const auto  damage  = model.damage(s);
+    DamageField field;
+    field.origin  = lattice.position(lattice.index(0, 0));
+    field.spacing = lattice.spacing();
+    field.nx      = lattice.nx();
+    field.ny      = lattice.ny();
+    field.values.assign(field.nx * field.ny, std::numeric_limits<double>::quiet_NaN());
+    for (std::size_t i : model.nodes())
+      field.values[lattice.row(i) * field.nx + lattice.column(i)] = damage[i];
+    return field;
+  }
+
+  Arrival arrive(geometry::Polyline path, const geometry::Body &body, double margin, double reach,
+                 std::size_t first_new)
+  {
+    for (std::size_t k = first_new == 0 ? 0 : first_new - 1; k + 1 < path.size(); ++k)
+      {
+        const Point  e = path[k + 1] - path[k];
+        const double l = geometry::norm(e);
+        if (l == 0.)
+          continue;
+        const Point u = (1. / l) * e;
+        for (const auto &hole : body.holes)
+          {
+            const double t = distance_to_circle(path[k], u, hole.centre, hole.radius + margin);
+            if (t <= l)
+              {
+                path.resize(k + 1);
+                if (t > 1e-9)
+                  path.push_back(path[k] + t * u);
+                return {path, "reached the hole at " + to_text(hole.centre)};
+              }
+          }
+      }
+    if (path.size() > first_new && path.size() >= 2)
+      {
+        const Point  e = path.back() - path[path.size() - 2];
+        const Point  u = (1. / geometry::norm(e)) * e;
+        const double t = distance_to_outline(path.back(), u, body.outline);
+        if (t <= reach)
+          {
+            path.back() = path.back() + t * u;
+            return {path, "reached the outline"};
+          }
+      }
+    return {path, ""};
+  }
+
   geometry::Polyline read_path(const std::string &file)
   {
     std::ifstream in(file);

@@ -8,7 +8,9 @@
 #include <vector>
 
 #include "crack.h"
+#include "crack_extraction.h"
 #include "geometry.h"
+#include "model.h"
 
 namespace dealii
 {
@@ -48,6 +50,23 @@ namespace pumpd::coupling
   /// First t >= 0 with |x + t e - c| = R for the unit e (0 if x is inside the circle, infinity
   /// if the ray misses it).
   double distance_to_circle(geometry::Point x, geometry::Point e, geometry::Point c, double R);
+
+  /// Distance from x to the nearest hole's circle or outline edge.
+  double clearance(geometry::Point x, const geometry::Body &body);
+
+  /// The PD damage on the lattice (crack extraction's input), NaN where there is no material.
+  DamageField damage_field(const local::PdModel &model, const local::State &s);
+
+  /// Where a grown crack path ends its growth: cut where it first comes within `margin` of a hole
+  /// (segments from first_new - 1 on: the new ones), or extended to the outline when its last
+  /// segment ends within `reach` of it. reason: "" while the tip goes on.
+  struct Arrival
+  {
+    geometry::Polyline path;
+    std::string        reason;
+  };
+  Arrival arrive(geometry::Polyline path, const geometry::Body &body, double margin, double reach,
+                 std::size_t first_new = 0);
 
   /// Reference path (x, y per line; lines starting with '#' or a letter are skipped). Throws
   /// InvalidParameter("Published path", ...) if it cannot be read.

@@ -97,70 +97,6 @@ namespace pumpd::coupling
         throw InvalidParameter("Output interval", "0", "must be >= 1");
     }
 
-    /// The PD damage on the lattice, NaN where there is no material (as in global_local.cc).
-    DamageField damage_field(const local::PdModel &model, const local::State &s)
-    {
-      const auto &lattice = model.lattice();
-      const auto  damage  = model.damage(s);
-      DamageField field;
-      field.origin  = lattice.position(lattice.index(0, 0));
-      field.spacing = lattice.spacing();
-      field.nx      = lattice.nx();
-      field.ny      = lattice.ny();
-      field.values.assign(field.nx * field.ny, std::numeric_limits<double>::quiet_NaN());
-      for (std::size_t i : model.nodes())
-        field.values[lattice.row(i) * field.nx + lattice.column(i)] = damage[i];
-      return field;
-    }
-
-    /// The path cut where it first comes within `margin` of a hole, or extended to the outline
-    /// when its last segment ends within `reach` of it; reason "" while the tip goes on.
-    std::pair<geometry::Polyline, std::string> arrive(geometry::Polyline path, const geometry::Body &body,
-                                                      double margin, double reach, std::size_t first_new)
-    {
-      for (std::size_t k = first_new == 0 ? 0 : first_new - 1; k + 1 < path.size(); ++k)
-        {
-          const Point  e = path[k + 1] - path[k];
-          const double l = geometry::norm(e);
-          if (l == 0.)
-            continue;
-          const Point u = (1. / l) * e;
-          for (const auto &hole : body.holes)
-            {
-              const double t = distance_to_circle(path[k], u, hole.centre, hole.radius + margin);
-              if (t <= l)
-                {
-                  path.resize(k + 1);
-                  if (t > 1e-9)
-                    path.push_back(path[k] + t * u);
-                  return {path, "reached the hole at " + to_text(hole.centre)};
-                }
-            }
-        }
-      if (path.size() > first_new && path.size() >= 2)
-        {
-          const Point  e = path.back() - path[path.size() - 2];
-          const Point  u = (1. / geometry::norm(e)) * e;
-          const double t = distance_to_outline(path.back(), u, body.outline);
-          if (t <= reach)
-            {
-              path.back() = path.back() + t * u;
-              return {path, "reached the outline"};
-            }
-        }
-      return {path, ""};
-    }
-
-    /// Distance from x to the nearest hole's circle or outline edge.
-    double clearance(Point x, const geometry::Body &body)
-    {
-      const auto &o = body.outline;
-      double      d = std::min({x.x - o.x_min, o.x_max - x.x, x.y - o.y_min, o.y_max - x.y});
-      for (const auto &hole : body.holes)
-        d = std::min(d, geometry::norm(x - hole.centre) - hole.radius);
-      return d;
-    }
-
     double peak_rss_mb()
     {
       rusage usage{};
@@ -340,8 +276,8 @@ namespace pumpd::coupling
             for (std::size_t k = 1; k < increment.path.size(); ++k)
               path.push_back(increment.path[k]);
             auto arrival = arrive(path, body, p.hole_margin, p.horizon, p.initial_crack.size());
-            result.path  = arrival.first;
-            stop         = arrival.second;
+            result.path  = arrival.path;
+            stop         = arrival.reason;
           }
         const double new_length = geometry::length(result.path);
         growth                  = std::max(0., new_length - length);

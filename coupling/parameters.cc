@@ -257,6 +257,26 @@ namespace pumpd::coupling
       const auto xy = dealii::Utilities::split_string_list(text, ',');
       return {dealii::Utilities::string_to_double(xy[0]), dealii::Utilities::string_to_double(xy[1])};
     }
+
+    /// The subsections Material and Peridynamics, shared by the PD scenes.
+    void read_peridynamics(ParameterHandler &prm, local::MaterialParameters &material, double &horizon,
+                           int &horizon_ratio, double &tolerance, std::size_t &max_iterations)
+    {
+      prm.enter_subsection("Material");
+      material.youngs_modulus  = prm.get_double("Young's modulus");
+      material.fracture_energy = prm.get_double("Fracture energy");
+      material.density         = prm.get_double("Density");
+      material.plane_strain    = prm.get_bool("Plane strain");
+      prm.leave_subsection();
+      prm.enter_subsection("Peridynamics");
+      horizon                = prm.get_double("Horizon");
+      horizon_ratio          = prm.get_integer("Horizon over spacing");
+      material.influence     = local::influence_from_string(prm.get("Influence function"));
+      material.break_factor  = prm.get_double("Bond break factor");
+      tolerance              = prm.get_double("Relaxation tolerance");
+      max_iterations         = prm.get_integer("Relaxation max iterations");
+      prm.leave_subsection();
+    }
   } // namespace
 
   LefmGrowthParameters read_lefm_growth(ParameterHandler &prm)
@@ -296,20 +316,7 @@ namespace pumpd::coupling
   {
     EdgeCrackParameters p;
     p.output_directory = output_directory(prm);
-    prm.enter_subsection("Material");
-    p.material.youngs_modulus  = prm.get_double("Young's modulus");
-    p.material.fracture_energy = prm.get_double("Fracture energy");
-    p.material.density         = prm.get_double("Density");
-    p.material.plane_strain    = prm.get_bool("Plane strain");
-    prm.leave_subsection();
-    prm.enter_subsection("Peridynamics");
-    p.horizon                = prm.get_double("Horizon");
-    p.horizon_ratio          = prm.get_integer("Horizon over spacing");
-    p.material.influence     = local::influence_from_string(prm.get("Influence function"));
-    p.material.break_factor  = prm.get_double("Bond break factor");
-    p.tolerance              = prm.get_double("Relaxation tolerance");
-    p.max_iterations         = prm.get_integer("Relaxation max iterations");
-    prm.leave_subsection();
+    read_peridynamics(prm, p.material, p.horizon, p.horizon_ratio, p.tolerance, p.max_iterations);
     prm.enter_subsection("Edge crack");
     p.box_size        = prm.get_double("Box size");
     p.k_start         = prm.get_double("First K over K_c");
@@ -329,20 +336,7 @@ namespace pumpd::coupling
   {
     GlobalLocalParameters p;
     p.output_directory = output_directory(prm);
-    prm.enter_subsection("Material");
-    p.material.youngs_modulus  = prm.get_double("Young's modulus");
-    p.material.fracture_energy = prm.get_double("Fracture energy");
-    p.material.density         = prm.get_double("Density");
-    p.material.plane_strain    = prm.get_bool("Plane strain");
-    prm.leave_subsection();
-    prm.enter_subsection("Peridynamics");
-    p.horizon               = prm.get_double("Horizon");
-    p.horizon_ratio         = prm.get_integer("Horizon over spacing");
-    p.material.influence    = local::influence_from_string(prm.get("Influence function"));
-    p.material.break_factor = prm.get_double("Bond break factor");
-    p.tolerance             = prm.get_double("Relaxation tolerance");
-    p.max_iterations        = prm.get_integer("Relaxation max iterations");
-    prm.leave_subsection();
+    read_peridynamics(prm, p.material, p.horizon, p.horizon_ratio, p.tolerance, p.max_iterations);
     prm.enter_subsection("Global-local");
     p.mesh_file = prm.get("Mesh file");
     p.mesh_size = prm.get_double("Mesh size");
@@ -387,20 +381,7 @@ namespace pumpd::coupling
   {
     FullPdParameters p;
     p.output_directory = output_directory(prm);
-    prm.enter_subsection("Material");
-    p.material.youngs_modulus  = prm.get_double("Young's modulus");
-    p.material.fracture_energy = prm.get_double("Fracture energy");
-    p.material.density         = prm.get_double("Density");
-    p.material.plane_strain    = prm.get_bool("Plane strain");
-    prm.leave_subsection();
-    prm.enter_subsection("Peridynamics");
-    p.horizon               = prm.get_double("Horizon");
-    p.horizon_ratio         = prm.get_integer("Horizon over spacing");
-    p.material.influence    = local::influence_from_string(prm.get("Influence function"));
-    p.material.break_factor = prm.get_double("Bond break factor");
-    p.tolerance             = prm.get_double("Relaxation tolerance");
-    p.max_iterations        = prm.get_integer("Relaxation max iterations");
-    prm.leave_subsection();
+    read_peridynamics(prm, p.material, p.horizon, p.horizon_ratio, p.tolerance, p.max_iterations);
     prm.enter_subsection("Full PD");
     const auto corners = dealii::Utilities::split_string_list(prm.get("Beam outline"), ';');
     const auto lo = to_point(corners[0]), hi = to_point(corners[1]);
