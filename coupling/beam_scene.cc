@@ -86,6 +86,15 @@ namespace pumpd::coupling
     return body;
   }
 
+  geometry::Body read_beam(dealii::Triangulation<2> &tria, const std::string &mesh_file, double mesh_size,
+                           const std::vector<std::pair<std::string, Point>> &named_points)
+  {
+    global::read_mesh(mesh_file, tria, mesh_size);
+    global::require_boundary_ids(tria, {1, 2, 3, 4});
+    require_vertices(tria, named_points);
+    return body_of(tria);
+  }
+
   void require_vertices(const dealii::Triangulation<2> &tria, const std::vector<std::pair<std::string, Point>> &named)
   {
     for (const auto &[name, x] : named)

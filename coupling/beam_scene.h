@@ -33,6 +33,11 @@ namespace pumpd::coupling
   /// farthest of them (the mesh's hole is a polygon inscribed in that circle).
   geometry::Body body_of(const dealii::Triangulation<2, 2> &tria);
 
+  /// A beam scene's mesh read into tria (boundary ids 1-4 required: the outline), its body, and
+  /// the named points (supports, load) checked to be mesh vertices.
+  geometry::Body read_beam(dealii::Triangulation<2, 2> &tria, const std::string &mesh_file, double mesh_size,
+                           const std::vector<std::pair<std::string, geometry::Point>> &named_points);
+
   /// Throws InvalidParameter(name, ...) for each named point that is not a mesh vertex.
   void require_vertices(const dealii::Triangulation<2, 2> &tria,
                         const std::vector<std::pair<std::string, geometry::Point>> &named_points);

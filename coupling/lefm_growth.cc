@@ -16,7 +16,6 @@
 #include "beam_scene.h"
 #include "elasticity.h"
 #include "error.h"
-#include "mesh.h"
 #include "path_metrics.h"
 
 namespace pumpd::coupling
@@ -117,10 +116,8 @@ namespace pumpd::coupling
     const geometry::Polyline reference = p.published_path.empty() ? geometry::Polyline{} : read_path(p.published_path);
 
     dealii::Triangulation<2> tria;
-    global::read_mesh(p.mesh_file, tria, p.mesh_size);
-    global::require_boundary_ids(tria, {1, 2, 3, 4});
-    const geometry::Body body = body_of(tria);
-    require_vertices(tria, {{"Pin support", p.pin}, {"Roller support", p.roller}, {"Load point", p.load_point}});
+    const geometry::Body body =
+      read_beam(tria, p.mesh_file, p.mesh_size, {{"Pin support", p.pin}, {"Roller support", p.roller}, {"Load point", p.load_point}});
     std::optional<global::Crack> crack = initial_crack(p.initial_crack, body);
 
     global::ElasticMaterial material{p.youngs_modulus, p.poisson_ratio, p.plane_strain};
