@@ -10,7 +10,8 @@ memory (the process's maximum resident set), PD node-steps, global DoFs, and the
 symmetric mean and Hausdorff distance from the finest coupled run and from the full PD run (each
 pair compared over the shorter path's extent). Writes trade.csv, trade.md and trade_pareto.png
 (wall time against mean path error from full PD) to --out and, with --docs, to that folder too.
-Prints `pumpd-metric trade.<name> <value>` for the issue's three figures.
+Prints `pumpd-metric trade.<name> <value>` for the issue's three figures. --replot redraws the
+plot from <out>/trade.csv without running anything.
 Run it with /usr/bin/python3 (Debian's python3-matplotlib, python3-numpy).
 """
 import argparse
@@ -139,13 +140,46 @@ def distance(a, b, step=2.5e-4):
     return 0.5 * (directed[0][0] + directed[1][0]), max(directed[0][1], directed[1][1])
 
 
+def plot(rows, targets):
+    """Wall time against the mean path distance from each reference (finest coupled, full PD)."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, axes = plt.subplots(1, 2, figsize=(12, 4.5))
+    for ax, ref in zip(axes, (FINEST, "fullpd")):
+        for row in rows:
+            err = float(row[f"mean_vs_{ref}_mm"])
+            if row["run"] == ref or not math.isfinite(err):
+                continue
+            colour = "tab:blue" if row["run"].startswith("coupled") else ("tab:orange" if row["run"] == "lefm" else "tab:green")
+            ax.scatter(float(row["wall_s"]), err, color=colour, zorder=3)
+            ax.annotate(row["run"], (float(row["wall_s"]), err), textcoords="offset points", xytext=(4, 4), fontsize=8)
+        reference = next((row for row in rows if row["run"] == ref), None)
+        if reference is not None:
+            ax.axvline(float(reference["wall_s"]), color="gray", ls="--", lw=1, label=f"{ref} wall time")
+            ax.legend(fontsize=8)
+        ax.set_xscale("log")
+        ax.set_xlabel("wall time [s] (2 cores)")
+        ax.set_ylabel(f"mean path distance from {ref} [mm]")
+        ax.grid(True, which="both", alpha=0.3)
+    fig.suptitle("Ingraffea Case II: speed against accuracy")
+    fig.tight_layout()
+    for folder in targets:
+        fig.savefig(os.path.join(folder, "trade_pareto.png"), dpi=130)
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--pumpd", required=True)
     parser.add_argument("--out", required=True)
     parser.add_argument("--docs")
+    parser.add_argument("--replot", action="store_true", help="only redraw the plot from <out>/trade.csv")
     args = parser.parse_args()
     out = os.path.abspath(args.out)
+    if args.replot:
+        with open(os.path.join(out, "trade.csv")) as f:
+            plot(list(csv.DictReader(f)), [out] + ([os.path.abspath(args.docs)] if args.docs else []))
+        return 0
     os.makedirs(out, exist_ok=True)
     pumpd = os.path.abspath(args.pumpd)
 
@@ -187,29 +221,7 @@ def main():
             for row in rows:
                 f.write("| " + " | ".join(str(v) for v in row.values()) + " |\n")
 
-    import matplotlib
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    ref = "fullpd" if "fullpd" in results and results["fullpd"]["ok"] else FINEST
-    fig, ax = plt.subplots(figsize=(7, 4.5))
-    for row in rows:
-        err = row[f"mean_vs_{ref}_mm"]
-        if row["run"] == ref or not math.isfinite(err):
-            continue
-        colour = "tab:blue" if row["run"].startswith("coupled") else ("tab:orange" if row["run"] == "lefm" else "tab:green")
-        ax.scatter(row["wall_s"], err, color=colour, zorder=3)
-        ax.annotate(row["run"], (row["wall_s"], err), textcoords="offset points", xytext=(4, 4), fontsize=8)
-    if ref == "fullpd":
-        ax.axvline(results["fullpd"]["seconds"], color="tab:green", ls="--", lw=1, label="full PD wall time")
-        ax.legend(fontsize=8)
-    ax.set_xscale("log")
-    ax.set_xlabel("wall time [s] (2 cores)")
-    ax.set_ylabel(f"mean path distance from {ref} [mm]")
-    ax.set_title("Ingraffea Case II: speed against accuracy")
-    ax.grid(True, which="both", alpha=0.3)
-    fig.tight_layout()
-    for folder in targets:
-        fig.savefig(os.path.join(folder, "trade_pareto.png"), dpi=130)
+    plot(rows, targets)
 
     def value(run, key):
         return next((row[key] for row in rows if row["run"] == run), math.nan)
