@@ -376,7 +376,7 @@ namespace pumpd::coupling
         << "pumpd-metric fullpd.crack_length_m " << geometry::length(result.path) << "\n";
     if (!reference.empty())
       {
-        const auto dist            = path_distance(up_to_nearest(result.path, reference.back()), reference, 0.1 * h);
+        const auto dist            = published_distance(result.path, reference, 0.1 * h);
         result.published_mean      = dist.mean;
         result.published_hausdorff = dist.hausdorff;
         out << "pumpd-metric fullpd.mean_dev_mm " << 1e3 * dist.mean << "\n"

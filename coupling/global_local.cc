@@ -409,7 +409,7 @@ namespace pumpd::coupling
       result.mean_box_area = box_area_sum / double(result.exchanges.size());
     if (!reference.empty())
       {
-        const auto d = path_distance(up_to_nearest(result.path, reference.back()), reference, 0.1 * h);
+        const auto d = published_distance(result.path, reference, 0.1 * h);
         result.published_mean      = d.mean;
         result.published_hausdorff = d.hausdorff;
         out << "pumpd-metric coupling.mean_dev_mm " << 1e3 * d.mean << "\n"

@@ -120,4 +120,9 @@ namespace pumpd::coupling
     directed(b, a, step, mean_ba, max_ba);
     return {0.5 * (mean_ab + mean_ba), std::max(max_ab, max_ba)};
   }
+
+  PathDistance published_distance(const geometry::Polyline &path, const geometry::Polyline &published, double step)
+  {
+    return path_distance(up_to_nearest(path, published.back()), published, step);
+  }
 } // namespace pumpd::coupling

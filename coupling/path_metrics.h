@@ -27,4 +27,7 @@ namespace pumpd::coupling
   geometry::Polyline up_to_nearest(const geometry::Polyline &line, geometry::Point x);
   /// Symmetric mean and Hausdorff distance, both curves sampled every `step` [m] (> 0).
   PathDistance path_distance(const geometry::Polyline &a, const geometry::Polyline &b, double step);
+  /// A computed path against a published one over the published extent: path_distance of our
+  /// path up to its point nearest the published tip, and the published path.
+  PathDistance published_distance(const geometry::Polyline &path, const geometry::Polyline &published, double step);
 } // namespace pumpd::coupling

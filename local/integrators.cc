@@ -111,37 +111,54 @@ namespace pumpd::local
     /// |u - u_rigid|^2 over the nodes, u_rigid the least-squares rigid motion t + omega e_z x (x - x_c):
     /// the part of u that strains the body. A box cut out of a deflecting body moves and turns
     /// far more than it deforms, so a residual relative to |u| itself would stop too early.
-    double deformation_norm2(const PdModel &model, const State &s)
+    /// The node offsets from the centroid are fixed: computed once per relaxation.
+    class DeformationNorm
     {
-      const auto &nodes = model.nodes();
-      double      n = 0., xc = 0., yc = 0., tx = 0., ty = 0.;
-      for (std::size_t i : nodes)
-        {
-          const auto x = model.lattice().position(i);
-          n += 1.;
-          xc += x.x, yc += x.y, tx += s.ux[i], ty += s.uy[i];
-        }
-      if (n == 0.)
-        return 0.;
-      xc /= n, yc /= n, tx /= n, ty /= n;
-      double num = 0., den = 0.;
-      for (std::size_t i : nodes)
-        {
-          const auto   x  = model.lattice().position(i);
-          const double dx = x.x - xc, dy = x.y - yc;
-          num += dx * (s.uy[i] - ty) - dy * (s.ux[i] - tx);
-          den += dx * dx + dy * dy;
-        }
-      const double omega = den > 0. ? num / den : 0.;
-      double       u2    = 0.;
-      for (std::size_t i : nodes)
-        {
-          const auto   x  = model.lattice().position(i);
-          const double rx = s.ux[i] - tx + omega * (x.y - yc), ry = s.uy[i] - ty - omega * (x.x - xc);
-          u2 += rx * rx + ry * ry;
-        }
-      return u2;
-    }
+    public:
+      explicit DeformationNorm(const PdModel &model)
+        : nodes(model.nodes())
+      {
+        double xc = 0., yc = 0.;
+        for (std::size_t i : nodes)
+          {
+            const auto x = model.lattice().position(i);
+            xc += x.x, yc += x.y;
+          }
+        const double n = std::max<double>(1., nodes.size());
+        for (std::size_t i : nodes)
+          {
+            const auto x = model.lattice().position(i);
+            dx.push_back(x.x - xc / n), dy.push_back(x.y - yc / n);
+            polar += dx.back() * dx.back() + dy.back() * dy.back();
+          }
+      }
+
+      double squared(const State &s) const
+      {
+        if (nodes.empty())
+          return 0.;
+        double tx = 0., ty = 0., turn = 0.;
+        for (std::size_t k = 0; k < nodes.size(); ++k)
+          {
+            tx += s.ux[nodes[k]], ty += s.uy[nodes[k]];
+            turn += dx[k] * s.uy[nodes[k]] - dy[k] * s.ux[nodes[k]];
+          }
+        tx /= nodes.size(), ty /= nodes.size();
+        const double omega = polar > 0. ? turn / polar : 0.; // sum dx = sum dy = 0: t drops out
+        double       u2    = 0.;
+        for (std::size_t k = 0; k < nodes.size(); ++k)
+          {
+            const double rx = s.ux[nodes[k]] - tx + omega * dy[k], ry = s.uy[nodes[k]] - ty - omega * dx[k];
+            u2 += rx * rx + ry * ry;
+          }
+        return u2;
+      }
+
+    private:
+      const std::vector<std::size_t> &nodes;
+      std::vector<double>             dx, dy;
+      double                          polar = 0.;
+    };
   } // namespace
 
   // Kilic & Madenci (2010): fictitious density Lambda from the stiffness row sums (time step 1),
@@ -156,7 +173,8 @@ namespace pumpd::local
     const std::size_t n      = s.ux.size();
     std::vector<double> fx_old(n, 0.), fy_old(n, 0.);
 
-    RelaxationResult result;
+    const DeformationNorm deformation(model);
+    RelaxationResult      result;
     model.compute_forces(s);
     check_finite(model, s);
     double damping = 0.;
@@ -165,7 +183,7 @@ namespace pumpd::local
         double f2 = 0.;
         for (std::size_t i : nodes)
           f2 += free_x[i] * s.fx[i] * s.fx[i] + free_y[i] * s.fy[i] * s.fy[i];
-        const double u2   = deformation_norm2(model, s);
+        const double u2   = deformation.squared(s);
         result.iterations = it;
         result.residual   = std::sqrt(f2) / (lambda * std::sqrt(u2) + 1e-300);
         if (result.residual < tol || f2 == 0.)
