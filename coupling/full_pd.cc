@@ -95,6 +95,20 @@ namespace pumpd::coupling
         throw InvalidParameter("Hole margin", text(p.hole_margin), "must be in [0, 0.1] m");
       if (p.output_interval < 1)
         throw InvalidParameter("Output interval", "0", "must be >= 1");
+      require_range("Servo gain", p.servo_gain, 1e-6, 1., "must be in [1e-6, 1]");
+      if (!(p.gauge_distance >= 0.) || !(p.gauge_distance <= 0.25 * o.width()))
+        throw InvalidParameter("Gauge distance", text(p.gauge_distance),
+                               "must be in [0, a quarter of the beam's width] m (0: one horizon)");
+    }
+
+    /// The material node nearest x.
+    std::size_t nearest_node(const local::PdModel &model, Point x)
+    {
+      std::size_t best = model.nodes().front();
+      for (std::size_t i : model.nodes())
+        if (geometry::norm(model.lattice().position(i) - x) < geometry::norm(model.lattice().position(best) - x))
+          best = i;
+      return best;
     }
 
     double peak_rss_mb()
@@ -140,6 +154,20 @@ namespace pumpd::coupling
     extraction.horizon   = p.horizon;
     const double length0 = geometry::length(p.initial_crack);
 
+    // Crack-mouth opening w: the relative displacement of two gauge nodes either side of the
+    // mouth, along the normal to the initial crack.
+    const Point mouth_dir = (1. / geometry::norm(p.initial_crack[1] - p.initial_crack[0])) *
+                            (p.initial_crack[1] - p.initial_crack[0]);
+    const Point       normal{mouth_dir.y, -mouth_dir.x};
+    const double      gauge = p.gauge_distance > 0. ? p.gauge_distance : p.horizon;
+    const std::size_t gauge_minus = nearest_node(model, p.initial_crack[0] - gauge * normal);
+    const std::size_t gauge_plus  = nearest_node(model, p.initial_crack[0] + gauge * normal);
+    const auto mouth_opening = [&](const local::State &st) {
+      return (st.ux[gauge_plus] - st.ux[gauge_minus]) * normal.x +
+             (st.uy[gauge_plus] - st.uy[gauge_minus]) * normal.y;
+    };
+    const bool by_mouth = p.control == FullPdParameters::Control::crack_mouth_opening;
+
     // Nodes near the initial tip: their stretch ratio decides the elastic jump (the pads' own
     // stress concentrations do not).
     std::vector<std::size_t> near_tip;
@@ -158,8 +186,8 @@ namespace pumpd::coupling
           write_path(p.output_directory + "/reference_path.csv", reference);
         write_path(p.output_directory + "/crack_path.csv", p.initial_crack);
         table.open(p.output_directory + "/load_steps.csv");
-        table << "step,load_point_displacement_m,load_N_per_m,crack_length_m,tip_x_m,tip_y_m,dr_iterations,"
-                 "dr_converged,repeats,seconds\n";
+        table << "step,load_point_displacement_m,crack_mouth_opening_m,load_N_per_m,crack_length_m,tip_x_m,tip_y_m,"
+                 "dr_iterations,dr_converged,repeats,seconds\n";
       }
     out << "full PD: beam " << p.outline.width() << " x " << p.outline.height() << " m, " << p.holes.size()
         << " holes, initial crack " << length0 << " m; delta " << p.horizon << " m, m = " << p.horizon_ratio
@@ -172,16 +200,22 @@ namespace pumpd::coupling
     result.nodes = model.nodes().size();
     result.path  = p.initial_crack;
     local::State s = model.initial_state();
+    // The damage the crack is traced through: per node the largest of the accepted states. Softened
+    // bonds behind the tip relax again when the load falls after the peak (the softening is
+    // elastic up to the break stretch), but the crack they marked stays.
+    DamageField traced;
     std::vector<double> ux_prev(s.ux.size(), 0.), uy_prev(s.uy.size(), 0.); // last accepted state
-    double      d = 0., dd_prev = 0.;
+    // d: the controlled displacement (load point, or crack-mouth opening once the servo is on);
+    // pad: the load point's displacement.
+    double      d = 0., dd_prev = 0., pad = 0., pad_prev = 0.;
+    bool        servo_on   = false;
+    double      pad_over_w = 0.; // (d/w)_0 of the servo
     double      dd         = 0.01 * p.max_displacement; // reference state of the elastic phase
     bool        elastic    = true;
     bool        grown      = false;
     std::size_t stalled    = 0;
     double      length     = length0;
     double      growth_t0  = 0.;
-    double      grown_at_d = 0.;
-    std::size_t output_count = 0;
 
     for (std::size_t n = 1;; ++n)
       {
@@ -190,24 +224,27 @@ namespace pumpd::coupling
             result.stop_reason = "maximum steps";
             break;
           }
-        if (d >= p.max_displacement * (1. - 1e-12))
+        if (pad >= p.max_displacement * (1. - 1e-12))
           {
             result.stop_reason = "maximum displacement";
             break;
           }
-        dd = std::min(dd, p.max_displacement - d);
+        if (!servo_on)
+          dd = std::min(dd, p.max_displacement - d);
         const auto   t_step = Clock::now();
         FullPdStep   step;
         step.step = n;
         const local::State saved = s;
         CrackIncrement     increment;
+        DamageField        field;
         std::string        branching;
-        double             d_new = d + dd, growth = 0., last_growth = 0.;
+        double             d_new = d + dd, pad_new = pad, growth = 0., last_growth = 0.;
         for (;;)
           {
             d_new = d + dd;
             // Predictor: elastic, the state scaled to the new displacement; later the last
             // increment extrapolated.
+            pad_new = d_new;
             if (elastic && d > 0.)
               for (std::size_t i : model.nodes())
                 {
@@ -215,17 +252,48 @@ namespace pumpd::coupling
                   s.uy[i] *= d_new / d;
                 }
             else if (dd_prev > 0.)
-              for (std::size_t i : model.nodes())
-                {
-                  const double r = dd / dd_prev, ux = s.ux[i], uy = s.uy[i];
-                  s.ux[i] += r * (ux - ux_prev[i]);
-                  s.uy[i] += r * (uy - uy_prev[i]);
-                }
-            load.set_target(Point{0., -d_new});
+              {
+                const double r = dd / dd_prev;
+                for (std::size_t i : model.nodes())
+                  {
+                    const double ux = s.ux[i], uy = s.uy[i];
+                    s.ux[i] += r * (ux - ux_prev[i]);
+                    s.uy[i] += r * (uy - uy_prev[i]);
+                  }
+                if (servo_on)
+                  pad_new = pad + r * (pad - pad_prev);
+              }
+            else if (servo_on)
+              pad_new = pad + pad_over_w * dd;
+            load.set_target(Point{0., -pad_new});
             pin.apply(s, 1.);
             roller.apply(s, 1.);
             load.apply(s, 1.);
-            const auto relaxed = relax.solve(s);
+            local::Servo servo;
+            if (servo_on)
+              {
+                // The opening misses its target by e: move the pad by (d/w) e and, with it, the
+                // whole body along the secant mode saved / pad (the last accepted state per unit
+                // pad displacement), so that the beam's bending follows the pad at once instead of
+                // over the relaxation's slowest period; the relaxation then settles the rest.
+                servo.tolerance = 0.1 * dd / d_new;
+                servo.correct   = [&](local::State &st) {
+                  const double error = d_new - mouth_opening(st);
+                  if (std::abs(error) < servo.tolerance * d_new)
+                    return std::abs(error) / d_new;
+                  const double move = p.servo_gain * pad_over_w * error;
+                  for (std::size_t i : model.nodes())
+                    {
+                      st.ux[i] += move / pad * saved.ux[i];
+                      st.uy[i] += move / pad * saved.uy[i];
+                    }
+                  pad_new += move;
+                  load.set_target(Point{0., -pad_new});
+                  load.apply(st, 1.);
+                  return std::abs(d_new - mouth_opening(st)) / d_new;
+                };
+              }
+            const auto relaxed = relax.solve(s, servo);
             step.iterations += relaxed.iterations;
             step.converged = relaxed.converged;
             result.node_steps += n_nodes * double(relaxed.iterations);
@@ -234,7 +302,11 @@ namespace pumpd::coupling
                   << relaxed.iterations << " iterations\n";
             try
               {
-                increment = extract_crack(damage_field(model, s), tip0, dir0, extraction);
+                field = damage_field(model, s);
+                if (!traced.values.empty())
+                  for (std::size_t k = 0; k < field.values.size(); ++k)
+                    field.values[k] = std::max(field.values[k], traced.values[k]);
+                increment = extract_crack(field, tip0, dir0, extraction);
               }
             catch (const CrackBranching &e)
               {
@@ -265,8 +337,13 @@ namespace pumpd::coupling
             ux_prev[i] = saved.ux[i];
             uy_prev[i] = saved.uy[i];
           }
-        dd_prev = dd;
-        d       = d_new;
+        traced   = field;
+        dd_prev  = dd;
+        d        = d_new;
+        pad_prev = pad;
+        pad      = pad_new;
+        if (servo_on)
+          pad_over_w = pad / mouth_opening(s);
         std::string stop;
         if (!branching.empty())
           stop = "crack branching, refused: " + branching;
@@ -293,7 +370,15 @@ namespace pumpd::coupling
             if (z_tip >= p.onset_stretch_ratio * (1. - 1e-3) || growth > 0.)
               {
                 elastic = false;
-                dd      = p.first_increment * d;
+                if (by_mouth)
+                  {
+                    // From here on d is the crack-mouth opening (w = d / (d/w)_0 in the elastic phase).
+                    servo_on   = true;
+                    pad_over_w = pad / mouth_opening(s);
+                    d          = mouth_opening(s);
+                    dd_prev /= pad_over_w;
+                  }
+                dd = p.first_increment * d;
               }
             else
               dd = std::max(d * (p.onset_stretch_ratio / std::max(z_tip, 1e-12) - 1.), p.first_increment * d);
@@ -308,41 +393,39 @@ namespace pumpd::coupling
           {
             grown      = true;
             growth_t0  = seconds_since(t0);
-            grown_at_d = d;
           }
         stalled = grown && growth == 0. ? stalled + 1 : 0;
         if (stop.empty() && stalled >= p.stall_steps)
           stop = "the crack stopped growing (" + std::to_string(stalled) + " steps without growth)";
 
-        step.displacement = d;
-        step.load         = -load.reaction(s).y;
-        step.crack_length = length;
-        step.tip          = result.path.back();
+        step.displacement  = pad;
+        step.mouth_opening = mouth_opening(s);
+        step.load          = -load.reaction(s).y;
+        step.crack_length  = length;
+        step.tip           = result.path.back();
         step.seconds      = seconds_since(t_step);
         result.steps.push_back(step);
         if (table)
           {
-            table << std::setprecision(10) << n << "," << d << "," << step.load << "," << length << "," << step.tip.x
-                  << "," << step.tip.y << "," << step.iterations << "," << step.converged << "," << step.repeats << ","
+            table << std::setprecision(10) << n << "," << pad << "," << step.mouth_opening << "," << step.load << ","
+                  << length << "," << step.tip.x << "," << step.tip.y << "," << step.iterations << "," << step.converged << "," << step.repeats << ","
                   << step.seconds << "\n";
             table.flush();
             write_path(p.output_directory + "/crack_path.csv", result.path);
           }
-        const bool last = !stop.empty() || n >= p.max_steps || d >= p.max_displacement * (1. - 1e-12);
+        const bool last = !stop.empty() || n >= p.max_steps || pad >= p.max_displacement * (1. - 1e-12);
         if (series && (n % p.output_interval == 0 || last))
-          {
-            series->add(model, s);
-            ++output_count;
-          }
+          series->add(model, s);
 
         // ETA: growth rate against the tip's clearance once the crack grows, else the
         // displacement still to go.
         const double elapsed = seconds_since(t0);
-        double       eta     = d > 0. ? elapsed / d * (p.max_displacement - d) : 0.;
+        double       eta     = pad > 0. ? elapsed / pad * (p.max_displacement - pad) : 0.;
         if (grown && length > length0)
           eta = std::min(eta, (elapsed - growth_t0 + 1e-9) / (length - length0) *
                                 std::max(0., clearance(result.path.back(), body) - p.hole_margin));
-        out << "step " << std::setw(3) << n << "  d " << std::setprecision(4) << std::setw(9) << 1e3 * d << " mm  load "
+        out << "step " << std::setw(3) << n << "  d " << std::setprecision(4) << std::setw(9) << 1e3 * pad << " mm  w "
+            << std::setw(9) << 1e3 * step.mouth_opening << " mm  load "
             << std::setw(9) << step.load << " N/m  crack " << std::setw(7) << 1e3 * length << " mm (+"
             << 1e3 * growth << ")  tip " << to_text(step.tip) << "  DR " << step.iterations
             << (step.converged ? "" : " (not converged)") << (step.repeats ? "  repeats " + std::to_string(step.repeats) : "")
@@ -355,8 +438,6 @@ namespace pumpd::coupling
             break;
           }
       }
-    (void)grown_at_d;
-    (void)output_count;
 
     result.seconds     = seconds_since(t0);
     result.peak_rss_mb = peak_rss_mb();
@@ -364,7 +445,7 @@ namespace pumpd::coupling
     for (const auto &st : result.steps)
       iterations += st.iterations;
     out << "end: " << result.stop_reason << "; crack " << geometry::length(result.path) << " m, tip at "
-        << to_text(result.path.back()) << ", load-point displacement " << d << " m, " << result.steps.size()
+        << to_text(result.path.back()) << ", load-point displacement " << pad << " m, " << result.steps.size()
         << " steps, " << result.seconds << " s\n";
     out << "pumpd-metric fullpd.nodes " << model.nodes().size() << "\n"
         << "pumpd-metric fullpd.node_steps " << result.node_steps << "\n"

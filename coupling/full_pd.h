@@ -6,10 +6,13 @@
 // load are prescribed regions (local::PrescribedRegion): the pin fixes ux = uy = 0 on the nodes
 // within `support radius` of its point, the roller uy = 0, the load pad prescribes uy = -d on the
 // nodes within that radius of the load point (ux free); bonds within `no-fail radius` of these
-// points stay linear elastic (the pads would crush otherwise). Quasi-static states by dynamic relaxation
-// at each displacement d; after each state the crack is traced from the initial tip through the
-// damage field (coupling::extract_crack) and the run stops where the crack reaches a hole (within
-// the hole margin) or the outline, stops growing for good, or d reaches its maximum.
+// points stay linear elastic (the pads would crush otherwise). Quasi-static states by dynamic
+// relaxation at each displacement d; after each state the crack is traced from the initial tip
+// (coupling::extract_crack) through the damage field, per node the largest damage of the accepted
+// states (the softening is elastic up to the break stretch, so bonds behind the tip relax when
+// the load falls after the peak; the crack they marked stays). The run stops where the crack
+// reaches a hole (within the hole margin) or the outline, stops growing for good, or d reaches
+// its maximum.
 //
 // Displacement steps (the rule the scene follows):
 //  1. elastic: while no bond has passed its inflection stretch (max stretch ratio Z < 1) the
@@ -24,6 +27,18 @@
 //     displacement the crack runs at any increment) and the step is accepted as it is.
 // The predictor of each state: the elastic state scaled to the new d (phase 1), later the last
 // state plus the last step's increment extrapolated to dd.
+//
+// Control. Under load-point displacement the beam snaps back once the crack grows: the
+// equilibrium path turns back in d, and dynamic relaxation jumps to a far state (the crack runs
+// into a hole). With `control = crack mouth opening` the steps above are taken in the
+// crack-mouth opening w instead (phase 1 stays under d; w is proportional to it there), which
+// grows monotonically along the whole path. The opening is read between two gauge nodes one
+// `gauge distance` either side of the crack mouth (normal to the initial crack). A servo inside
+// the relaxation (local::Servo) moves the pad whenever |w - w*| exceeds a tenth of the step: by
+// gain (d/w)_0 (w* - w), and the whole body with it along the secant mode u_0 / d_0 ((d, u)_0
+// the last accepted state), so that the beam's bending follows the pad at once instead of over
+// the relaxation's slowest period; the relaxation settles the rest. A state is relaxed when the
+// force residual is below the tolerance and w is within that tenth of w*.
 #pragma once
 
 #include <cstddef>
@@ -65,7 +80,14 @@ namespace pumpd::coupling
     double      max_increment       = 0.05;  ///< largest dd / d
     double      target_advance      = 0.;    ///< a_t [m]; 0: one horizon
     double      max_advance         = 0.;    ///< [m]; 0: four horizons (then the step is repeated)
-    double      max_displacement    = 0.005; ///< [m]
+    double      max_displacement    = 0.005; ///< [m], load-point displacement
+    enum class Control
+    {
+      load_point,
+      crack_mouth_opening
+    } control                = Control::crack_mouth_opening;
+    double      servo_gain     = 1.;    ///< in (0, 1]: the fraction of the opening error one correction removes
+    double      gauge_distance = 0.;    ///< [m]; 0: one horizon
     std::size_t max_steps           = 400;
     std::size_t stall_steps         = 15;    ///< no growth for this many steps after it began: stop
     double      hole_margin         = 0.001; ///< [m]
@@ -79,6 +101,7 @@ namespace pumpd::coupling
   {
     std::size_t     step = 0;
     double          displacement = 0.; ///< load-point displacement, downwards [m]
+    double          mouth_opening = 0.; ///< crack-mouth opening between the gauges [m]
     double          load         = 0.; ///< reaction of the load pad, upwards on the loader [N/m]
     double          crack_length = 0.; ///< [m], the initial crack included
     geometry::Point tip;

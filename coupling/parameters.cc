@@ -223,6 +223,16 @@ namespace pumpd::coupling
           "0 or at least the target advance; 0: four horizons.");
     entry(prm, "Maximum displacement", "0.005", Patterns::Double(0.), "Stop at this load-point displacement [m], > 0.");
     entry(prm, "Maximum steps", "400", Patterns::Integer(1), "Displacement steps at most, >= 1.");
+    entry(prm, "Control", "crack mouth opening", Patterns::Selection("crack mouth opening|load point"),
+          "What the steps increase once bonds soften: the crack-mouth opening (stable through the snap-back "
+          "of the load-displacement curve; a servo in the relaxation moves the load pad) or the load-point "
+          "displacement (the crack may run unstably).");
+    entry(prm, "Servo gain", "1", Patterns::Double(0., 1.),
+          "Crack-mouth control: the fraction of the opening error a servo correction removes (it moves the pad and "
+          "the body along the last state's secant mode), in [1e-6, 1].");
+    entry(prm, "Gauge distance", "0", Patterns::Double(0.),
+          "Crack-mouth control: the opening is read between the nodes this far [m] either side of the crack "
+          "mouth, in [0, a quarter of the beam's width]; 0: one horizon.");
     entry(prm, "Stall steps", "15", Patterns::Integer(1),
           "Once the crack has grown, stop after this many steps in a row without growth (the crack stopped), >= 1.");
     entry(prm, "Hole margin", "0.001", Patterns::Double(0., 1.),
@@ -409,6 +419,10 @@ namespace pumpd::coupling
     p.target_advance      = prm.get_double("Target advance");
     p.max_advance         = prm.get_double("Maximum advance");
     p.max_displacement    = prm.get_double("Maximum displacement");
+    p.control             = prm.get("Control") == "load point" ? FullPdParameters::Control::load_point
+                                                               : FullPdParameters::Control::crack_mouth_opening;
+    p.servo_gain          = prm.get_double("Servo gain");
+    p.gauge_distance      = prm.get_double("Gauge distance");
     p.max_steps           = prm.get_integer("Maximum steps");
     p.stall_steps         = prm.get_integer("Stall steps");
     p.hole_margin         = prm.get_double("Hole margin");

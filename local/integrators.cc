@@ -164,7 +164,7 @@ namespace pumpd::local
   // Kilic & Madenci (2010): fictitious density Lambda from the stiffness row sums (time step 1),
   // adaptive damping c = 2 sqrt(u.K1 u / u.u) from the local diagonal stiffness
   // K1_ii = -(f_i^n - f_i^{n-1}) / (Lambda v_i^{n-1/2}).
-  RelaxationResult DynamicRelaxation::solve(State &s) const
+  RelaxationResult DynamicRelaxation::solve(State &s, const Servo &servo) const
   {
     const auto       &nodes  = model.nodes();
     const auto       &free_x = model.free_mask_x();
@@ -175,6 +175,8 @@ namespace pumpd::local
 
     const DeformationNorm deformation(model);
     RelaxationResult      result;
+    if (servo.correct)
+      result.servo_error = servo.correct(s);
     model.compute_forces(s);
     check_finite(model, s);
     double damping = 0.;
@@ -186,7 +188,7 @@ namespace pumpd::local
         const double u2   = deformation.squared(s);
         result.iterations = it;
         result.residual   = std::sqrt(f2) / (lambda * std::sqrt(u2) + 1e-300);
-        if (result.residual < tol || f2 == 0.)
+        if ((result.residual < tol || f2 == 0.) && result.servo_error < servo.tolerance)
           {
             result.converged = true;
             break;
@@ -208,6 +210,8 @@ namespace pumpd::local
             fx_old[i] = s.fx[i];
             fy_old[i] = s.fy[i];
           }
+        if (servo.correct)
+          result.servo_error = servo.correct(s);
         model.compute_forces(s);
         check_finite(model, s);
         double num = 0., den = 0.;

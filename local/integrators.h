@@ -6,6 +6,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 #include "boundary_layer.h"
@@ -41,7 +42,19 @@ namespace pumpd::local
   {
     std::size_t iterations = 0;
     double      residual   = 0.; ///< |f_free| / (stiffness scale |u - u_rigid|), u_rigid: best-fit rigid motion
+    double      servo_error = 0.; ///< the servo's last relative error (0 without one)
     bool        converged  = false;
+  };
+
+  /// A controller acting inside dynamic relaxation: indirect displacement control, e.g. a servo
+  /// that moves a loading pad until a crack-mouth opening reaches its target. `correct` is called
+  /// after every update of the free components; it may change prescribed components of the state
+  /// and returns its relative error. A state counts as relaxed only when that error is below
+  /// `tolerance` as well.
+  struct Servo
+  {
+    std::function<double(State &)> correct;
+    double                         tolerance = 1e-6;
   };
 
   class DynamicRelaxation
@@ -51,9 +64,9 @@ namespace pumpd::local
     DynamicRelaxation(const PdModel &model, double tolerance, std::size_t max_iterations);
 
     /// Relaxes the free components to equilibrium with the prescribed ones (layer, regions) as
-    /// they are in s. Velocities are
-    /// fictitious and left at zero on return.
-    RelaxationResult solve(State &s) const;
+    /// they are in s, or as the servo moves them. Velocities are fictitious and left at zero on
+    /// return.
+    RelaxationResult solve(State &s, const Servo &servo = {}) const;
 
   private:
     const PdModel &model;

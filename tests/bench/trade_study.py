@@ -5,12 +5,14 @@
 
 Runs, one process each (from the repository root, so the scenes' relative paths hold):
 LEFM-only growth, the global-local cycle at several settings (PD spacing, horizon, box size,
-exchange increment, global refinement) and the full-domain PD beam. For each: wall time, peak
+exchange increment, global refinement) and the full-domain PD beam at two horizons (8 and 4 mm,
+m = 4: the path change between them is the full-PD convergence check; 4 mm is the reference). For each: wall time, peak
 memory (the process's maximum resident set), PD node-steps, global DoFs, and the crack path's
 symmetric mean and Hausdorff distance from the finest coupled run and from the full PD run (each
 pair compared over the shorter path's extent). Writes trade.csv, trade.md and trade_pareto.png
 (wall time against mean path error from full PD) to --out and, with --docs, to that folder too.
-Prints `pumpd-metric trade.<name> <value>` for the issue's three figures. --replot redraws the
+Prints `pumpd-metric trade.<name> <value>` for the issue's three figures and the full-PD
+path change (trade.fullpd_path_change_delta8_vs_4_mm). --replot redraws the
 plot from <out>/trade.csv without running anything.
 Run it with /usr/bin/python3 (Debian's python3-matplotlib, python3-numpy).
 """
@@ -52,7 +54,10 @@ SCENARIOS = [
      "global refinement: 1 level at the tip (2 mm cells)"),
     ("coupled-ref3", COUPLED, {"Global-local": {"Refinement levels near the tip": "3"}},
      "global refinement: 3 levels at the tip (0.5 mm cells)"),
-    ("fullpd", "prm/ingraffea-case2-fullpd.prm", {}, "full-domain PD beam"),
+    ("fullpd-delta8", "prm/ingraffea-case2-fullpd.prm", {"Peridynamics": {"Horizon": "0.008"}},
+     "full-domain PD beam, horizon 8 mm (h = 2 mm): the horizon convergence check"),
+    ("fullpd", "prm/ingraffea-case2-fullpd.prm", {},
+     "full-domain PD beam, horizon 4 mm (h = 1 mm), crack-mouth-opening control: the reference"),
 ]
 FINEST = "coupled-delta2"
 DEFAULT = "coupled-default"
@@ -230,6 +235,9 @@ def main():
     if full and full["ok"] and results[DEFAULT]["ok"]:
         print(f"pumpd-metric trade.coupled_over_fullpd_time {results[DEFAULT]['seconds'] / full['seconds']:.4g}")
         print(f"pumpd-metric trade.coupled_vs_fullpd_mean_dev_mm {value(DEFAULT, 'mean_vs_fullpd_mm')}")
+    coarse = results.get("fullpd-delta8")
+    if full and full["ok"] and coarse and coarse["ok"]:
+        print(f"pumpd-metric trade.fullpd_path_change_delta8_vs_4_mm {value('fullpd-delta8', 'mean_vs_fullpd_mm')}")
     if "lefm" in results and results["lefm"]["ok"] and results[DEFAULT]["ok"]:
         print(f"pumpd-metric trade.lefm_vs_coupled_mean_dev_mm {1e3 * distance(results['lefm']['path'], results[DEFAULT]['path'])[0]:.3g}")
     for row in rows:

@@ -75,8 +75,56 @@ TEST(FullPd, CrackGrowsUpwardsFromTheNotch)
   std::ifstream steps(p.output_directory + "/load_steps.csv");
   std::string   header;
   std::getline(steps, header);
-  EXPECT_EQ(header.rfind("step,load_point_displacement_m,load_N_per_m,crack_length_m", 0), 0u) << header;
+  EXPECT_EQ(header.rfind("step,load_point_displacement_m,crack_mouth_opening_m,load_N_per_m,crack_length_m", 0), 0u)
+    << header;
   test::metric("fullpd.test_growth_m", growth);
+}
+
+// Crack-mouth-opening control against load-point control on the coarse beam. Under load-point
+// displacement the first state with growth jumps far (the load-displacement curve snaps back, and
+// dynamic relaxation lands on a distant state); under crack-mouth control the opening rises at
+// every step, the traced path turns back in the load-point displacement (the snap-back), and no
+// step grows the crack by more than two horizons.
+TEST(FullPd, CrackMouthControlTracesTheSnapBack)
+{
+  std::ostringstream log;
+  const auto         first_growth = [](const FullPdResult &r, double length0) {
+    for (const auto &st : r.steps)
+      if (st.crack_length > length0 + 1e-9)
+        return st.crack_length - length0;
+    return 0.;
+  };
+  const double length0 = geometry::length(coarse().initial_crack);
+
+  FullPdParameters by_load = coarse();
+  by_load.control          = FullPdParameters::Control::load_point;
+  by_load.stall_steps      = 1;
+  const auto load_run      = run_full_pd(by_load, log);
+
+  FullPdParameters by_mouth = coarse();
+  by_mouth.control          = FullPdParameters::Control::crack_mouth_opening;
+  by_mouth.max_steps        = 53;
+  const auto mouth_run      = run_full_pd(by_mouth, log);
+
+  double largest_step = 0., previous_length = length0;
+  bool   turned_back  = false;
+  for (std::size_t k = 1; k < mouth_run.steps.size(); ++k)
+    {
+      const auto &a = mouth_run.steps[k - 1], &b = mouth_run.steps[k];
+      EXPECT_GT(b.mouth_opening, a.mouth_opening) << "step " << b.step;
+      turned_back = turned_back || (b.displacement < a.displacement && b.crack_length > a.crack_length);
+      if (b.crack_length > previous_length)
+        largest_step = std::max(largest_step, b.crack_length - previous_length);
+      previous_length = std::max(previous_length, b.crack_length);
+    }
+  std::cout << "first growth: load-point control " << 1e3 * first_growth(load_run, length0)
+            << " mm, crack-mouth control " << 1e3 * first_growth(mouth_run, length0) << " mm; largest step "
+            << 1e3 * largest_step << " mm; steps " << load_run.steps.size() << " and " << mouth_run.steps.size()
+            << "\n";
+  EXPECT_TRUE(turned_back) << "the load-point displacement never decreased while the crack grew";
+  EXPECT_GT(previous_length - length0, 0.01);
+  EXPECT_LT(largest_step, 2. * by_mouth.horizon);
+  EXPECT_GT(first_growth(load_run, length0), 2. * first_growth(mouth_run, length0));
 }
 
 TEST(FullPd, BadInputIsRefused)
@@ -113,6 +161,8 @@ TEST(FullPd, BadInputIsRefused)
   expect_invalid(run([](auto &p) { p.stall_steps = 0; }), "Stall steps", ">= 1");
   expect_invalid(run([](auto &p) { p.hole_margin = 0.2; }), "Hole margin", "[0, 0.1] m");
   expect_invalid(run([](auto &p) { p.output_interval = 0; }), "Output interval", ">= 1");
+  expect_invalid(run([](auto &p) { p.servo_gain = 0.; }), "Servo gain", "[1e-6, 1]");
+  expect_invalid(run([](auto &p) { p.gauge_distance = 0.2; }), "Gauge distance", "[0, a quarter of the beam's width]");
   expect_invalid(run([](auto &p) { p.published_path = "no-such-path.csv"; }), "Published path", "cannot be opened");
   // A support region that holds no node: the pin off the body's material (inside a hole).
   expect_invalid(run([](auto &p) { p.pin = {0.1524, 0.12065}; p.support_radius = 0.002; p.no_fail_radius = 0.; }),

@@ -2,7 +2,7 @@
 // component masks, a bar pulled through two end pads whose uy is free (rollers), relaxed by dynamic
 // relaxation against the analytic uniaxial-stress field (the calibration tolerance, 2 %), the pads'
 // reaction against sigma_xx W, a roller that leaves ux free, Verlet's work through moving regions,
-// and the refusals.
+// a servo inside the relaxation that holds a gauge at its target, and the refusals.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -255,4 +255,56 @@ TEST(PrescribedRegion, NoFailZoneStaysLinear)
   EXPECT_NEAR(big_s.dissipated, 0., 1e-9 * model.elastic_energy(big_s)) << "failures undone";
   // The elastic energy is the linear one: (1/2) k e^2 L scaled with e^2.
   EXPECT_NEAR(model.elastic_energy(big_s) / model.elastic_energy(small_s), (big / strain) * (big / strain), 1e-4 * (big / strain) * (big / strain));
+}
+
+// A servo inside dynamic relaxation (local::Servo): the pads prescribe ux = s x with s unknown,
+// and the servo moves s (and the body along the mode x) until the node nearest the bar's middle
+// has ux = e x_g. The relaxed bar is then in uniaxial stress with s = e (the calibration
+// tolerance, 2 %), and the gauge is within the servo's tolerance of its target.
+TEST(PrescribedRegion, ServoHoldsAGaugeAtItsTarget)
+{
+  const PdModel model(MaterialParameters{}, delta, m, bar(), pads());
+  RegionDisplacement left(model, 0), right(model, 1), pin(model, 2);
+  pin.set_target(geometry::Point{0., 0.});
+  std::size_t gauge = model.nodes().front();
+  for (std::size_t i : model.nodes())
+    if (geometry::norm(model.lattice().position(i) - geometry::Point{0.5 * length, 0.5 * width}) <
+        geometry::norm(model.lattice().position(gauge) - geometry::Point{0.5 * length, 0.5 * width}))
+      gauge = i;
+  const double x_g = model.lattice().position(gauge).x, target = strain * x_g;
+
+  double     s_pads = 0.5 * strain; // the servo's variable, started off by half
+  const auto set_pads = [&](State &st) {
+    const auto affine = [s_pads](geometry::Point x) { return geometry::Point{s_pads * x.x, 0.}; };
+    left.set_target(affine);
+    right.set_target(affine);
+    left.apply(st, 1.);
+    right.apply(st, 1.);
+  };
+  State s = model.initial_state();
+  set_pads(s);
+  pin.apply(s, 1.);
+  std::size_t corrections = 0;
+  Servo       servo;
+  servo.tolerance = 1e-4;
+  servo.correct   = [&](State &st) {
+    const double error = target - st.ux[gauge];
+    if (std::abs(error) < servo.tolerance * target)
+      return std::abs(error) / target;
+    const double ds = error / x_g;
+    for (std::size_t i : model.nodes())
+      st.ux[i] += ds * model.lattice().position(i).x;
+    s_pads += ds;
+    set_pads(st);
+    ++corrections;
+    return std::abs(target - st.ux[gauge]) / target;
+  };
+  const auto result = DynamicRelaxation(model, 1e-10, 400000).solve(s, servo);
+  EXPECT_TRUE(result.converged) << "residual " << result.residual << ", servo error " << result.servo_error;
+  std::cout << "servo: " << corrections << " corrections, " << result.iterations << " DR iterations; s / e "
+            << s_pads / strain << ", gauge error " << result.servo_error << "\n";
+  EXPECT_GE(corrections, 1u);
+  EXPECT_LT(result.servo_error, servo.tolerance);
+  EXPECT_NEAR(s_pads / strain, 1., 0.02);
+  EXPECT_NEAR(s.ux[gauge] / target, 1., 1e-4);
 }
