@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "hdf5_array.h"
+
 namespace pumpd::coupling
 {
   namespace
@@ -17,28 +19,12 @@ namespace pumpd::coupling
 
     void write_doubles(hid_t file, const char *name, const std::vector<double> &v)
     {
-      const hsize_t n     = v.size();
-      const hid_t   space = H5Screate_simple(1, &n, nullptr);
-      const hid_t   set   = H5Dcreate2(file, name, H5T_NATIVE_DOUBLE, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-      fail_if(set < 0 || (n > 0 && H5Dwrite(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) < 0),
-              std::string("cannot write ") + name);
-      H5Dclose(set);
-      H5Sclose(space);
+      local::hdf5::write_array(file, name, v, "cycle checkpoint");
     }
 
     std::vector<double> read_doubles(hid_t file, const char *name)
     {
-      const hid_t set = H5Dopen2(file, name, H5P_DEFAULT);
-      fail_if(set < 0, std::string("no dataset ") + name);
-      const hid_t space = H5Dget_space(set);
-      hsize_t     n     = 0;
-      H5Sget_simple_extent_dims(space, &n, nullptr);
-      H5Sclose(space);
-      std::vector<double> v(n);
-      const bool bad = n > 0 && H5Dread(set, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) < 0;
-      H5Dclose(set);
-      fail_if(bad, std::string("cannot read ") + name);
-      return v;
+      return local::hdf5::read_array<double>(file, name, "cycle checkpoint");
     }
   } // namespace
 

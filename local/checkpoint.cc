@@ -6,6 +6,8 @@
 #include <stdexcept>
 #include <vector>
 
+#include "hdf5_array.h"
+
 namespace pumpd::local
 {
   namespace
@@ -17,43 +19,15 @@ namespace pumpd::local
     }
 
     template <class T>
-    hid_t type_of();
-    template <>
-    hid_t type_of<double>() { return H5T_NATIVE_DOUBLE; }
-    template <>
-    hid_t type_of<std::uint64_t>() { return H5T_NATIVE_UINT64; }
-
-    template <class T>
     void write_array(hid_t file, const char *name, const std::vector<T> &v)
     {
-      const hsize_t n     = v.size();
-      const hid_t   space = H5Screate_simple(1, &n, nullptr);
-      const hid_t   set   = H5Dcreate2(file, name, type_of<T>(), space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
-      fail_if(set < 0 || H5Dwrite(set, type_of<T>(), H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) < 0,
-              std::string("cannot write ") + name);
-      H5Dclose(set);
-      H5Sclose(space);
+      hdf5::write_array(file, name, v, "checkpoint");
     }
 
     template <class T>
     void read_array(hid_t file, const char *name, std::vector<T> &v, std::size_t expected)
     {
-      const hid_t set = H5Dopen2(file, name, H5P_DEFAULT);
-      fail_if(set < 0, std::string("no dataset ") + name);
-      const hid_t space = H5Dget_space(set);
-      hsize_t     n     = 0;
-      H5Sget_simple_extent_dims(space, &n, nullptr);
-      H5Sclose(space);
-      if (n != expected)
-        {
-          H5Dclose(set);
-          fail_if(true, std::string(name) + " has " + std::to_string(n) + " entries, the model needs " +
-                          std::to_string(expected));
-        }
-      v.resize(n);
-      fail_if(H5Dread(set, type_of<T>(), H5S_ALL, H5S_ALL, H5P_DEFAULT, v.data()) < 0,
-              std::string("cannot read ") + name);
-      H5Dclose(set);
+      v = hdf5::read_array<T>(file, name, "checkpoint", expected);
     }
 
     void write_scalar(hid_t object, const std::string &name, double value)

@@ -6,9 +6,12 @@
 //   model.h           PdModel: nodes, bonds (holes, pre-cracks), boundary layer, force kernel,
 //                     energies, damage, stretch ratio Z, stable time step
 //   boundary_layer.h  prescribed, ramped displacement of the boundary layer
-//   integrators.h     velocity Verlet (stability bound enforced), dynamic relaxation
+//   integrators.h     velocity Verlet (stability bound enforced), dynamic relaxation (with an
+//                     optional servo for indirect displacement control)
 //   explicit_run.h    a dynamic run that stops on NaN and saves the last good state
 //   checkpoint.h      HDF5 checkpoint / restart (bit for bit)
+//   hdf5_array.h      one-dimensional HDF5 datasets (the checkpoints' arrays; not included here:
+//                     it needs the HDF5 headers)
 //   vtu_output.h      VTU / PVD for ParaView
 //   lefm.h            Williams near-tip fields (reference and driving data)
 //   error.h           InvalidParameter (names the parameter and its range), NonFiniteState
