@@ -12,10 +12,12 @@
 #include <string>
 
 #include "error.h"
+#include "expect_invalid.h"
 #include "full_pd.h"
 #include "metric.h"
 
 using namespace pumpd;
+using pumpd::test::expect_invalid;
 using namespace pumpd::coupling;
 
 namespace
@@ -50,21 +52,6 @@ namespace
       return r;
     }();
     return result;
-  }
-
-  void expect_invalid(const std::function<void()> &f, const std::string &name, const std::string &allowed)
-  {
-    try
-      {
-        f();
-        ADD_FAILURE() << "no exception; expected one naming " << name;
-      }
-    catch (const InvalidParameter &e)
-      {
-        const std::string what = e.what();
-        EXPECT_EQ(what.rfind(name + " = ", 0), 0u) << what;
-        EXPECT_NE(what.find(allowed), std::string::npos) << what;
-      }
   }
 } // namespace
 

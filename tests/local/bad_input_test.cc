@@ -12,6 +12,7 @@
 
 #include "boundary_layer.h"
 #include "error.h"
+#include "expect_invalid.h"
 #include "explicit_run.h"
 #include "integrators.h"
 #include "lattice.h"
@@ -19,6 +20,7 @@
 #include "model.h"
 
 using namespace pumpd;
+using pumpd::test::expect_invalid;
 using namespace pumpd::local;
 
 namespace
@@ -32,28 +34,6 @@ namespace
     r.body.outline = {0., 0., 0.1, 0.1};
     r.box          = {0.03, 0.03, 0.07, 0.07};
     return r;
-  }
-
-  /// f must throw InvalidParameter whose what() starts with "<name> = " and contains `allowed`.
-  void expect_invalid(const std::function<void()> &f, const std::string &name, const std::string &allowed)
-  {
-    try
-      {
-        f();
-        ADD_FAILURE() << "no exception; expected InvalidParameter naming \"" << name << "\"";
-      }
-    catch (const InvalidParameter &e)
-      {
-        const std::string what = e.what();
-        EXPECT_EQ(what.rfind(name + " = ", 0), 0u) << "message does not start with the name \"" << name
-                                                   << "\": " << what;
-        EXPECT_NE(what.find(allowed), std::string::npos) << "no \"" << allowed << "\" in: " << what;
-      }
-    catch (const std::exception &e)
-      {
-        ADD_FAILURE() << "wrong exception type; expected InvalidParameter naming \"" << name
-                      << "\", got: " << e.what();
-      }
   }
 
   PdModel make_model(double horizon, int ratio, const Region &region = good_region(),

@@ -12,11 +12,13 @@
 
 #include "boundary_layer.h"
 #include "error.h"
+#include "expect_invalid.h"
 #include "integrators.h"
 #include "metric.h"
 #include "model.h"
 
 using namespace pumpd;
+using pumpd::test::expect_invalid;
 using namespace pumpd::local;
 
 namespace
@@ -42,21 +44,6 @@ namespace
     return {PrescribedRegion::box("Left pad", {0., 0., delta, width}, true, false),
             PrescribedRegion::box("Right pad", {length - delta, 0., length, width}, true, false),
             PrescribedRegion::disk("Centre pin", {0.0005, 0.5 * width}, 0.0011, false, true)};
-  }
-
-  void expect_invalid(const std::function<void()> &f, const std::string &name, const std::string &allowed)
-  {
-    try
-      {
-        f();
-        ADD_FAILURE() << "no exception; expected one naming " << name;
-      }
-    catch (const InvalidParameter &e)
-      {
-        const std::string what = e.what();
-        EXPECT_EQ(what.rfind(name + " = ", 0), 0u) << what;
-        EXPECT_NE(what.find(allowed), std::string::npos) << what;
-      }
   }
 } // namespace
 
