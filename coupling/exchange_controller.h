@@ -21,7 +21,7 @@ namespace pumpd::coupling
   {
     double first_load_factor  = 0.9;   ///< lambda of the first sub-step of the first exchange
     double load_increment     = 0.05;  ///< dlambda
-    double min_load_increment = 0.005; ///< dlambda is not halved below this
+    double min_load_increment = 0.0125; ///< dlambda is not halved below this
     double max_load_factor    = 3.;    ///< no growth up to here: the run stops
     double max_advance        = 0.008; ///< da_max per exchange [m]
     double min_advance        = 0.004; ///< an advance below this is no growth [m]

@@ -13,7 +13,10 @@ pair compared over the shorter path's extent). Writes trade.csv, trade.md and tr
 (wall time against mean path error from full PD) to --out and, with --docs, to that folder too.
 Prints `pumpd-metric trade.<name> <value>` for the issue's three figures and the full-PD
 path change (trade.fullpd_path_change_delta8_vs_4_mm). --replot redraws the
-plot from <out>/trade.csv without running anything.
+plot from <out>/trade.csv without running anything. --reuse NAME ... takes those runs from an
+earlier study in the same --out (its trade.csv row, log and crack path) when their scene file is
+unchanged, instead of running them again: for iterating on the coupled settings without the
+40-minute full-PD reference. Only valid while the code those runs exercise is unchanged.
 Run it with /usr/bin/python3 (Debian's python3-matplotlib, python3-numpy).
 """
 import argparse
@@ -47,8 +50,20 @@ SCENARIOS = [
      "horizon 8 mm (h = 1 mm), box and increments scaled with it"),
     ("coupled-box48", COUPLED, {"Global-local": {"Box size": "0.048", "Maximum box size": "0.096"}},
      "box 48 mm"),
+    ("coupled-box64", COUPLED, {"Global-local": {"Box size": "0.064", "Maximum box size": "0.096",
+                                                 "Box tip position": "0.15"}},
+     "box 64 mm, tip 15 % from its rear (most of the box ahead of the tip, as the published boxes)"),
+    ("coupled-box64-m4", COUPLED, {"Global-local": {"Box size": "0.064", "Maximum box size": "0.096",
+                                                    "Box tip position": "0.15"},
+                                   "Peridynamics": {"Horizon over spacing": "4"}},
+     "box 64 mm, tip at 15 %, m = 4: is the larger box robust to a coarser PD spacing?"),
     ("coupled-da4", COUPLED, {"Global-local": {"Maximum advance": "0.004", "Minimum advance": "0.002"}},
      "exchange increment: da_max 4 mm (min 2 mm)"),
+    ("coupled-da5", COUPLED, {"Global-local": {"Maximum advance": "0.005", "Minimum advance": "0.0025"}},
+     "exchange increment: da_max 5 mm (min 2.5 mm)"),
+    ("coupled-da5-m4", COUPLED, {"Global-local": {"Maximum advance": "0.005", "Minimum advance": "0.0025"},
+                                 "Peridynamics": {"Horizon over spacing": "4"}},
+     "da_max 5 mm (min 2.5 mm) at m = 4: is the shorter exchange robust to a coarser PD spacing?"),
     ("coupled-da16", COUPLED, {"Global-local": {"Maximum advance": "0.016"}}, "exchange increment: da_max 16 mm"),
     ("coupled-ref1", COUPLED, {"Global-local": {"Refinement levels near the tip": "1"}},
      "global refinement: 1 level at the tip (2 mm cells)"),
@@ -73,6 +88,20 @@ def scene_file(base, overrides, out_dir, path):
         f.write(text)
 
 
+def read_run(out, name, ok):
+    """The pumpd-metric lines of <out>/<name>.log and the crack path of <out>/<name>/ (if ok)."""
+    metrics = {}
+    with open(os.path.join(out, name + ".log")) as f:
+        for line in f:
+            if line.startswith("pumpd-metric "):
+                _, key, value = line.split()
+                metrics[key] = float(value)
+    path_file = os.path.join(out, name, "crack_path.csv")
+    ok = ok and os.path.exists(path_file)
+    path = np.loadtxt(path_file, delimiter=",", skiprows=1, ndmin=2) if ok else None
+    return {"metrics": metrics, "path": path, "ok": ok}
+
+
 def run(pumpd, name, base, overrides, out):
     out_dir = os.path.join(out, name)
     shutil.rmtree(out_dir, ignore_errors=True)
@@ -85,15 +114,25 @@ def run(pumpd, name, base, overrides, out):
     _, status, usage = os.wait4(child.pid, 0)
     seconds = time.monotonic() - t0
     log.close()
-    metrics = {}
-    with open(os.path.join(out, name + ".log")) as f:
-        for line in f:
-            if line.startswith("pumpd-metric "):
-                _, key, value = line.split()
-                metrics[key] = float(value)
-    ok = os.waitstatus_to_exitcode(status) == 0 and os.path.exists(os.path.join(out_dir, "crack_path.csv"))
-    path = np.loadtxt(os.path.join(out_dir, "crack_path.csv"), delimiter=",", skiprows=1, ndmin=2) if ok else None
-    return {"seconds": seconds, "peak_mib": usage.ru_maxrss / 1024., "metrics": metrics, "path": path, "ok": ok}
+    r = read_run(out, name, os.waitstatus_to_exitcode(status) == 0)
+    return {**r, "seconds": seconds, "peak_mib": usage.ru_maxrss / 1024.}
+
+
+def reused(name, base, overrides, out, previous):
+    """The earlier run `name` from <out> if its scene file is the one this study would write and
+    the earlier trade.csv has its row; else None."""
+    prm = os.path.join(out, name + ".prm")
+    if name not in previous or not os.path.exists(prm) or not os.path.exists(os.path.join(out, name + ".log")):
+        return None
+    fresh = prm + ".new"
+    scene_file(base, overrides, os.path.join(out, name), fresh)
+    with open(prm) as a, open(fresh) as b:
+        same = a.read() == b.read()
+    os.remove(fresh)
+    if not same:
+        return None
+    row = previous[name]
+    return {**read_run(out, name, True), "seconds": float(row["wall_s"]), "peak_mib": float(row["peak_mib"])}
 
 
 def segment_distance(p, a, b):
@@ -179,6 +218,8 @@ def main():
     parser.add_argument("--out", required=True)
     parser.add_argument("--docs")
     parser.add_argument("--replot", action="store_true", help="only redraw the plot from <out>/trade.csv")
+    parser.add_argument("--reuse", nargs="+", default=[], metavar="NAME",
+                        help="take these runs from the earlier study in --out if their scene file is unchanged")
     args = parser.parse_args()
     out = os.path.abspath(args.out)
     if args.replot:
@@ -188,12 +229,26 @@ def main():
     os.makedirs(out, exist_ok=True)
     pumpd = os.path.abspath(args.pumpd)
 
+    unknown = set(args.reuse) - {s[0] for s in SCENARIOS}
+    if unknown:
+        parser.error(f"--reuse: no run named {', '.join(sorted(unknown))} (runs: {', '.join(s[0] for s in SCENARIOS)})")
+    previous = {}
+    if args.reuse and os.path.exists(os.path.join(out, "trade.csv")):
+        with open(os.path.join(out, "trade.csv")) as f:
+            previous = {row["run"]: row for row in csv.DictReader(f)}
+
     results = {}
     for name, base, overrides, what in SCENARIOS:
         if not os.path.exists(os.path.join(ROOT, base)):
             print(f"skipped {name}: {base} does not exist", flush=True)
             continue
-        r = run(pumpd, name, base, overrides, out)
+        r = reused(name, base, overrides, out, previous) if name in args.reuse else None
+        if r is None:
+            if name in args.reuse:
+                print(f"{name}: no earlier run with this scene in {out}: running it", flush=True)
+            r = run(pumpd, name, base, overrides, out)
+        else:
+            print(f"{name}: reused from the earlier study in {out} (scene unchanged)", flush=True)
         r["what"] = what
         results[name] = r
         print(f"{name}: {r['seconds']:.1f} s, {r['peak_mib']:.0f} MiB, {'ok' if r['ok'] else 'FAILED'}", flush=True)
