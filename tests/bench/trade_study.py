@@ -189,7 +189,7 @@ def plot(rows, targets):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, axes = plt.subplots(1, 2, figsize=(12, 4.5))
+    fig, axes = plt.subplots(1, 2, figsize=(13, 6))
     for ax, ref in zip(axes, (FINEST, "fullpd")):
         for row in rows:
             err = float(row[f"mean_vs_{ref}_mm"])
@@ -201,8 +201,11 @@ def plot(rows, targets):
         reference = next((row for row in rows if row["run"] == ref), None)
         if reference is not None:
             ax.axvline(float(reference["wall_s"]), color="gray", ls="--", lw=1, label=f"{ref} wall time")
-            ax.legend(fontsize=8)
+        if ref == "fullpd":
+            ax.axhline(2., color="tab:red", ls=":", lw=1, label="issue 5 target: 2 mm")
+        ax.legend(fontsize=8, loc="center right")
         ax.set_xscale("log")
+        ax.set_yscale("log")
         ax.set_xlabel("wall time [s] (2 cores)")
         ax.set_ylabel(f"mean path distance from {ref} [mm]")
         ax.grid(True, which="both", alpha=0.3)
