@@ -281,11 +281,12 @@ namespace pumpd::coupling
                   const double error = d_new - mouth_opening(st);
                   if (std::abs(error) < servo.tolerance * d_new)
                     return std::abs(error) / d_new;
-                  const double move = p.servo_gain * pad_over_w * error;
+                  const double move  = p.servo_gain * pad_over_w * error;
+                  const double share = move / pad; // of the secant mode saved / pad
                   for (std::size_t i : model.nodes())
                     {
-                      st.ux[i] += move / pad * saved.ux[i];
-                      st.uy[i] += move / pad * saved.uy[i];
+                      st.ux[i] += share * saved.ux[i];
+                      st.uy[i] += share * saved.uy[i];
                     }
                   pad_new += move;
                   load.set_target(Point{0., -pad_new});
@@ -403,13 +404,13 @@ namespace pumpd::coupling
         step.load          = -load.reaction(s).y;
         step.crack_length  = length;
         step.tip           = result.path.back();
-        step.seconds      = seconds_since(t_step);
+        step.seconds       = seconds_since(t_step);
         result.steps.push_back(step);
         if (table)
           {
             table << std::setprecision(10) << n << "," << pad << "," << step.mouth_opening << "," << step.load << ","
-                  << length << "," << step.tip.x << "," << step.tip.y << "," << step.iterations << "," << step.converged << "," << step.repeats << ","
-                  << step.seconds << "\n";
+                  << length << "," << step.tip.x << "," << step.tip.y << "," << step.iterations << ","
+                  << step.converged << "," << step.repeats << "," << step.seconds << "\n";
             table.flush();
             write_path(p.output_directory + "/crack_path.csv", result.path);
           }
