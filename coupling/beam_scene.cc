@@ -190,7 +190,7 @@ namespace pumpd::coupling
   }
 
   Arrival arrive(geometry::Polyline path, const geometry::Body &body, double margin, double reach,
-                 std::size_t first_new)
+                 std::size_t first_new, double hole_reach)
   {
     for (std::size_t k = first_new == 0 ? 0 : first_new - 1; k + 1 < path.size(); ++k)
       {
@@ -220,6 +220,15 @@ namespace pumpd::coupling
           {
             path.back() = path.back() + t * u;
             return {path, "reached the outline"};
+          }
+        for (const auto &hole : body.holes)
+          {
+            const double s = distance_to_circle(path.back(), u, hole.centre, hole.radius + margin);
+            if (s <= hole_reach)
+              {
+                path.push_back(path.back() + s * u);
+                return {path, "reached the hole at " + to_text(hole.centre)};
+              }
           }
       }
     return {path, ""};

@@ -64,14 +64,17 @@ namespace pumpd::coupling
 
   /// Where a grown crack path ends its growth: cut where it first comes within `margin` of a hole
   /// (segments from first_new - 1 on: the new ones), or extended to the outline when its last
-  /// segment ends within `reach` of it. reason: "" while the tip goes on.
+  /// segment, continued, meets it within `reach`, or to a hole (its margin) within `hole_reach`:
+  /// in the PD box a ligament shorter than a horizon is spanned by every bond, so it is not
+  /// resolved and a tip heading into a hole that close has reached it. reason: "" while the tip
+  /// goes on.
   struct Arrival
   {
     geometry::Polyline path;
     std::string        reason;
   };
   Arrival arrive(geometry::Polyline path, const geometry::Body &body, double margin, double reach,
-                 std::size_t first_new = 0);
+                 std::size_t first_new = 0, double hole_reach = 0.);
 
   /// Reference path (x, y per line; lines starting with '#' or a letter are skipped). Throws
   /// InvalidParameter("Published path", ...) if it cannot be read.

@@ -24,7 +24,8 @@ namespace pumpd::coupling
   double ExchangeController::start()
   {
     dlambda = s.load_increment;
-    lambda  = accepted > 0. ? std::max(0.05, accepted - s.load_increment) : s.first_load_factor;
+    lambda  = s.start_below_accepted && accepted > 0. ? std::max(0.05, accepted - s.load_increment)
+                                                       : s.first_load_factor;
     return lambda;
   }
 

@@ -167,6 +167,10 @@ namespace pumpd::coupling
           "advance is mostly straight ahead: the increment must be long enough for the PD crack to turn.");
     entry(prm, "Near distance", "0.008", Patterns::Double(0., 1.),
           "Within this of a hole or the outline the advance per exchange is da_max / 2 [m], in [0, 1].");
+    entry(prm, "Start below the last load", "false", Patterns::Bool(),
+          "false: every exchange's PD states start at the First load factor (below P_c), so the rebuilt box "
+          "forms its process zone before the crack grows; true: one Load increment below the last accepted "
+          "load (fewer PD states, but the crack then runs within one relaxation and turns less).");
     entry(prm, "Maximum exchanges", "200", Patterns::Integer(1), "Global-local exchanges at most, >= 1.");
     entry(prm, "Maximum crack length", "0.3", Patterns::Double(0.), "Stop when the crack polyline is this long [m], > 0.");
     entry(prm, "Hole margin", "0.001", Patterns::Double(0., 1.), "A tip stops this far [m] from a hole's circle, in [0, 1].");
@@ -373,6 +377,7 @@ namespace pumpd::coupling
     p.exchange.max_advance          = prm.get_double("Maximum advance");
     p.exchange.min_advance          = prm.get_double("Minimum advance");
     p.exchange.near_distance        = prm.get_double("Near distance");
+    p.exchange.start_below_accepted = prm.get_bool("Start below the last load");
     p.max_exchanges                 = prm.get_integer("Maximum exchanges");
     p.max_crack_length              = prm.get_double("Maximum crack length");
     p.hole_margin                   = prm.get_double("Hole margin");

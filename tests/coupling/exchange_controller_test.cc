@@ -34,8 +34,22 @@ TEST(ExchangeController, RaisesUntilGrowthThenAccepts)
   EXPECT_DOUBLE_EQ(c.load_factor(), 1.1);
   EXPECT_EQ(c.judge(0.003, 0.008), D::accept);
   EXPECT_DOUBLE_EQ(c.load_factor(), 1.1);
-  // The next exchange starts one increment below the accepted load.
-  EXPECT_DOUBLE_EQ(c.start(), 1.0);
+  // The next exchange starts again below P_c: the rebuilt box loads up to growth quasi-statically.
+  EXPECT_DOUBLE_EQ(c.start(), 0.9);
+}
+
+TEST(ExchangeController, StartsBelowTheAcceptedLoadWhenAsked)
+{
+  auto s                 = settings();
+  s.start_below_accepted = true;
+  ExchangeController c(s);
+  EXPECT_DOUBLE_EQ(c.start(), 0.9); // nothing accepted yet
+  EXPECT_EQ(c.judge(0., 0.008), D::raise);    // 0.9 -> 1.0
+  EXPECT_EQ(c.judge(0., 0.008), D::raise);    // 1.0 -> 1.1
+  EXPECT_EQ(c.judge(0.003, 0.008), D::accept); // at 1.1
+  EXPECT_DOUBLE_EQ(c.start(), 1.0);            // one increment (0.1) below the accepted 1.1
+  c.restore(1.5);                              // a resumed run
+  EXPECT_DOUBLE_EQ(c.start(), 1.4);
 }
 
 TEST(ExchangeController, RepeatsWithSmallerIncrementsThenTruncates)
