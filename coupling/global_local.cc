@@ -308,8 +308,9 @@ namespace pumpd::coupling
             record.seconds_extraction += seconds_since(t);
             if (!branching.empty())
               break;
-            const bool arrives = increment.path.size() > 1 &&
-                                 !arrive(increment.path, body, p.hole_margin, p.horizon, 0, p.horizon).reason.empty();
+            const bool arrives =
+              increment.path.size() > 1 &&
+              !arrive(increment.path, body, p.hole_margin, p.horizon, 0, p.horizon).reason.empty();
             decision = controller.judge(increment.length(), allowed, arrives);
             out << "    PD at " << std::setprecision(4) << lambda << " P_c: " << relaxed.iterations
                 << " DR iterations, advance " << increment.length() << " m -> " << to_text(decision) << "\n"
@@ -350,7 +351,8 @@ namespace pumpd::coupling
           }
         else
           {
-            const auto arrival = arrive(truncate(increment.path, allowed), body, p.hole_margin, p.horizon, 0, p.horizon);
+            const auto arrival =
+              arrive(truncate(increment.path, allowed), body, p.hole_margin, p.horizon, 0, p.horizon);
             for (std::size_t k = 1; k < arrival.path.size(); ++k)
               if (geometry::norm(arrival.path[k] - crack->vertices().back()) > 1e-3 * h)
                 crack->grow(0, arrival.path[k]);

@@ -60,7 +60,7 @@ namespace
 // path of the trade study). Here at m = 8: at m = 4 on this coarse global mesh the PD crack
 // follows the lattice's vertical rows for 20 mm and passes left of the middle hole. Measured:
 // 0.5 mm mean, 2.2 mm Hausdorff from full PD. Regression bounds: mean < 1 mm, Hausdorff < 3 mm
-// (the default resolution is 0.5 mm from full PD, the finest coupled run 0.67 mm). The published
+// (the default resolution is 0.52 mm from full PD, the finest coupled run 1.28 mm). The published
 // PUM-PD path is further from full PD (4.5 mm): its distance is printed, not asserted.
 TEST(GlobalLocal, CaseTwoCoarseFollowsTheFullPdPathIntoTheMiddleHole)
 {
@@ -69,7 +69,8 @@ TEST(GlobalLocal, CaseTwoCoarseFollowsTheFullPdPathIntoTheMiddleHole)
   auto               p   = coarse(2, dir);
   p.horizon_ratio        = 8;
   const auto r           = run_global_local(p, log);
-  const auto full_pd     = published_distance(r.path, read_path(source + "/data/reference-paths/case2-fullpd.csv"), 1e-4);
+  const auto reference   = read_path(source + "/data/reference-paths/case2-fullpd.csv");
+  const auto full_pd     = published_distance(r.path, reference, 1e-4);
   std::cout << log.str();
   EXPECT_NE(r.stop_reason.find("reached the hole at (0.1524, 0.12065)"), std::string::npos) << r.stop_reason;
   EXPECT_LT(full_pd.mean, 0.001);
