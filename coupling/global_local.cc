@@ -181,6 +181,10 @@ namespace pumpd::coupling
           table << load_steps_header;
       }
 
+    // Where a grown path ends: a hole within its margin, or the outline or a hole within a horizon.
+    const auto arrival_of = [&](const geometry::Polyline &path) {
+      return arrive(path, body, p.hole_margin, p.horizon, 0, p.horizon);
+    };
     ExtractionSettings extraction;
     extraction.threshold = p.crack_damage;
     extraction.horizon   = p.horizon;
@@ -308,9 +312,7 @@ namespace pumpd::coupling
             record.seconds_extraction += seconds_since(t);
             if (!branching.empty())
               break;
-            const bool arrives =
-              increment.path.size() > 1 &&
-              !arrive(increment.path, body, p.hole_margin, p.horizon, 0, p.horizon).reason.empty();
+            const bool arrives = increment.path.size() > 1 && !arrival_of(increment.path).reason.empty();
             decision = controller.judge(increment.length(), allowed, arrives);
             out << "    PD at " << std::setprecision(4) << lambda << " P_c: " << relaxed.iterations
                 << " DR iterations, advance " << increment.length() << " m -> " << to_text(decision) << "\n"
@@ -351,8 +353,7 @@ namespace pumpd::coupling
           }
         else
           {
-            const auto arrival =
-              arrive(truncate(increment.path, allowed), body, p.hole_margin, p.horizon, 0, p.horizon);
+            const auto arrival = arrival_of(truncate(increment.path, allowed));
             for (std::size_t k = 1; k < arrival.path.size(); ++k)
               if (geometry::norm(arrival.path[k] - crack->vertices().back()) > 1e-3 * h)
                 crack->grow(0, arrival.path[k]);
