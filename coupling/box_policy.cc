@@ -24,10 +24,11 @@ namespace pumpd::coupling
       throw InvalidParameter("Box size", std::to_string(s.size),
                              "must be at least 4 horizons plus the box margin (" + std::to_string(least) +
                                " m): a boundary layer on each side, a horizon of free lattice around the tip");
-    if (s.size > std::min(body.outline.width(), body.outline.height()))
+    const Box &o = body.bounding_box();
+    if (s.size > std::min(o.width(), o.height()))
       throw InvalidParameter("Box size", std::to_string(s.size),
-                             "must not exceed the body's smaller side (" +
-                               std::to_string(std::min(body.outline.width(), body.outline.height())) + " m)");
+                             "must not exceed the body's smaller side (" + std::to_string(std::min(o.width(), o.height())) +
+                               " m)");
     if (s.max_size < s.size)
       throw InvalidParameter("Maximum box size", std::to_string(s.max_size), "must be >= the box size " +
                                                                               std::to_string(s.size) + " m");
@@ -37,7 +38,7 @@ namespace pumpd::coupling
   {
     // The tip must be clear of each interior edge by a horizon (layer) plus a horizon, and the
     // box must hold `margin` of free lattice ahead of the tip along d.
-    const auto &o        = body.outline;
+    const auto  &o       = body.bounding_box();
     const double tol     = 0.25 * s.spacing;
     const double layer_x0 = box.x_min > o.x_min + tol ? s.horizon : 0., layer_x1 = box.x_max < o.x_max - tol ? s.horizon : 0.;
     const double layer_y0 = box.y_min > o.y_min + tol ? s.horizon : 0., layer_y1 = box.y_max < o.y_max - tol ? s.horizon : 0.;
@@ -49,12 +50,13 @@ namespace pumpd::coupling
 
   Box BoxPolicy::fitted(Box box) const
   {
-    const auto &o = body.outline;
+    const auto &o = body.bounding_box();
     // Holes within reach: inside with a horizon to spare, or the box grows (up to max_size).
-    for (const auto &hole : body.holes)
+    for (const auto &hole : body.holes())
       {
-        const double reach = hole.radius + 2. * s.horizon;
-        const Box    around{hole.centre.x - reach, hole.centre.y - reach, hole.centre.x + reach, hole.centre.y + reach};
+        const Box    b     = hole.bounding_box();
+        const double reach = 2. * s.horizon;
+        const Box    around{b.x_min - reach, b.y_min - reach, b.x_max + reach, b.y_max + reach};
         const bool   near  = around.x_max > box.x_min && around.x_min < box.x_max && around.y_max > box.y_min &&
                           around.y_min < box.y_max;
         if (!near || box.contains(around))

@@ -13,7 +13,7 @@
 
 #include <vector>
 
-#include "geometry.h"
+#include "body.h"
 
 namespace pumpd::coupling
 {

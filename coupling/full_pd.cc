@@ -1,31 +1,90 @@
 #include "full_pd.h"
 
+#include <deal.II/base/parameter_handler.h>
+
 #include <sys/resource.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <filesystem>
-#include <fstream>
 #include <iomanip>
 #include <limits>
-#include <memory>
 #include <ostream>
 #include <sstream>
 
-#include "beam_scene.h"
+#include "arrival.h"
 #include "boundary_layer.h"
 #include "crack_extraction.h"
 #include "error.h"
+#include "exchange.h"
 #include "integrators.h"
 #include "model.h"
 #include "path_metrics.h"
-#include "vtu_output.h"
+#include "pd_conditions.h"
+#include "recorder.h"
 
 namespace pumpd::coupling
 {
   using geometry::Point;
-  using Clock = std::chrono::steady_clock;
+  using Clock        = std::chrono::steady_clock;
+  namespace Patterns = dealii::Patterns;
+
+  void FullPdControlSettings::add_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Full PD");
+    prm.add_parameter("Support radius", support_radius,
+                      "Point conditions and loading pads act on the nodes within this radius [m] of their point; 0: "
+                      "one horizon. At most half the body's smaller side.",
+                      Patterns::Double(0.));
+    prm.add_parameter("No-fail radius in horizons", no_fail_horizons,
+                      "Bonds within this many horizons of a point condition or pad stay linear elastic (a no-fail "
+                      "zone: the pads would crush otherwise); 0: none.",
+                      Patterns::Double(0., 1000.));
+    prm.add_parameter("Onset stretch ratio", onset_stretch_ratio,
+                      "The elastic phase jumps to the displacement where the largest stretch ratio Z near the tip "
+                      "reaches this (the state scaled: linear response).",
+                      Patterns::Double(1e-3, 1.));
+    prm.add_parameter("First increment", first_increment,
+                      "dd / d once bonds soften, in [Minimum increment, Maximum increment].", Patterns::Double(1e-6, 1.));
+    prm.add_parameter("Minimum increment", min_increment,
+                      "Smallest dd / d: a step that grows the crack by more than the maximum advance is repeated with "
+                      "dd / 2 down to this.",
+                      Patterns::Double(1e-6, 1.));
+    prm.add_parameter("Maximum increment", max_increment, "Largest dd / d, at least the minimum increment.",
+                      Patterns::Double(1e-6, 1.));
+    prm.add_parameter("Target advance", target_advance,
+                      "Crack advance per step the increment aims at [m]: dd <- dd clamp(a_t / growth, 1/2, 2), doubled "
+                      "after a step without growth; 0: one horizon.",
+                      Patterns::Double(0.));
+    prm.add_parameter("Maximum advance", max_advance,
+                      "A step growing the crack by more than this [m] is undone and repeated with half the increment; "
+                      "0 (four horizons) or at least the target advance.",
+                      Patterns::Double(0.));
+    prm.add_parameter("Maximum displacement", max_displacement,
+                      "Stop when the control displacement d (the largest prescribed displacement) reaches this [m]; "
+                      "0: no limit.",
+                      Patterns::Double(0.));
+    prm.add_parameter("Maximum steps", max_steps, "Displacement steps at most.", Patterns::Integer(1));
+    prm.add_parameter("Control", control,
+                      "What the steps increase once bonds soften: the crack-mouth opening (stable through the "
+                      "snap-back of the load-displacement curve; a servo in the relaxation moves the driven "
+                      "displacements; needs a crack with a mouth) or the control displacement d (the crack may run "
+                      "unstably).",
+                      Patterns::Selection("crack mouth opening|load point"));
+    prm.add_parameter("Servo gain", servo_gain,
+                      "Crack-mouth control: the fraction of the opening error a servo correction removes.",
+                      Patterns::Double(1e-6, 1.));
+    prm.add_parameter("Gauge distance", gauge_distance,
+                      "Crack-mouth control: the opening is read between the nodes this far [m] either side of the "
+                      "crack's mouth, at most a quarter of the body's width; 0: one horizon.",
+                      Patterns::Double(0.));
+    prm.add_parameter("Stall steps", stall_steps,
+                      "Once the crack has grown, stop after this many steps in a row without growth.",
+                      Patterns::Integer(1));
+    prm.add_parameter("Output interval", output_interval, "Write pd_NNN.vtu every n steps (and the last).",
+                      Patterns::Integer(1));
+    prm.leave_subsection();
+  }
 
   namespace
   {
@@ -38,68 +97,70 @@ namespace pumpd::coupling
       return s.str();
     }
 
-    void validate(const FullPdParameters &p)
+    void validate(const Scene &scene, const FullPdControlSettings &p)
     {
-      const auto &o = p.outline;
-      if (!(o.width() > 0. && o.height() > 0.) || !std::isfinite(o.width()) || !std::isfinite(o.height()))
-        throw InvalidParameter("Beam outline", to_text(Point{o.x_min, o.y_min}) + "; " + to_text(Point{o.x_max, o.y_max}),
-                               "needs a lower-left and an upper-right corner with positive width and height");
-      const double tol = 1e-9 * std::max(o.width(), o.height());
-      for (const auto &c : p.holes)
-        if (!(c.radius > 0.) || !o.contains(geometry::Box{c.centre.x - c.radius, c.centre.y - c.radius, c.centre.x + c.radius,
-                                                  c.centre.y + c.radius},
-                                              tol))
-          throw InvalidParameter("Holes", to_text(c.centre) + " r " + text(c.radius),
-                                 "each hole needs a radius > 0 and must lie inside the beam outline");
-      if (p.initial_crack.size() < 2)
-        throw InvalidParameter("Initial crack", to_text(p.initial_crack), "needs at least 2 points");
-      for (const auto &x : p.initial_crack)
-        if (!o.contains(x, tol))
-          throw InvalidParameter("Initial crack", to_text(p.initial_crack), "must lie inside the beam outline");
-      for (const auto &[name, x] : {std::pair<const char *, Point>{"Pin support", p.pin},
-                                    {"Roller support", p.roller},
-                                    {"Load point", p.load_point}})
-        if (!o.contains(x, tol))
-          throw InvalidParameter(name, to_text(x), "must lie on or inside the beam outline");
-      if (!(p.support_radius >= 0.) || !(p.support_radius <= 0.5 * std::min(o.width(), o.height())))
+      const auto &o = scene.body.bounding_box();
+      if (p.support_radius > 0.5 * std::min(o.width(), o.height()))
         throw InvalidParameter("Support radius", text(p.support_radius),
-                               "must be in [0, half the beam's smaller side] m (0: one horizon)");
-      if (!(p.no_fail_radius == 0. || (p.no_fail_radius >= p.support_radius && p.no_fail_radius <= 0.5 * std::min(o.width(), o.height()))))
-        throw InvalidParameter("No-fail radius", text(p.no_fail_radius),
-                               "must be 0 (none) or in [Support radius, half the beam's smaller side] m");
-      require_positive("Horizon", p.horizon);
-      if (p.horizon_ratio < 2)
-        throw InvalidParameter("Horizon over spacing", std::to_string(p.horizon_ratio),
-                               "must be an integer >= 2: the horizon spans at least two PD spacings");
-      require_range("Crack damage threshold", p.crack_damage, 0.05, 0.95, "must be in [0.05, 0.95]");
-      require_range("Onset stretch ratio", p.onset_stretch_ratio, 1e-3, 1., "must be in [0.001, 1]");
-      require_range("Minimum increment", p.min_increment, 1e-6, 1., "must be in [1e-6, 1]: a fraction of the displacement");
-      require_range("Maximum increment", p.max_increment, p.min_increment, 1.,
-                    "must be in [Minimum increment, 1]");
+                               "must be in [0, half the body's smaller side] m (0: one horizon)");
+      require_range("Maximum increment", p.max_increment, p.min_increment, 1., "must be in [Minimum increment, 1]");
       require_range("First increment", p.first_increment, p.min_increment, p.max_increment,
                     "must be in [Minimum increment, Maximum increment]");
-      if (!(p.target_advance >= 0.) || !std::isfinite(p.target_advance))
-        throw InvalidParameter("Target advance", text(p.target_advance), "must be >= 0 m (0: one horizon)");
-      if (!(p.max_advance >= 0.) || !std::isfinite(p.max_advance))
-        throw InvalidParameter("Maximum advance", text(p.max_advance), "must be >= 0 m (0: four horizons)");
-      const double target = p.target_advance > 0. ? p.target_advance : p.horizon;
-      if (p.max_advance > 0. && p.max_advance < target)
-        throw InvalidParameter("Maximum advance", text(p.max_advance),
-                               "must be 0 or at least the target advance (" + text(target) + " m)");
-      require_positive("Maximum displacement", p.max_displacement);
-      if (p.max_steps < 1)
-        throw InvalidParameter("Maximum steps", "0", "must be >= 1");
-      if (p.stall_steps < 1)
-        throw InvalidParameter("Stall steps", "0", "must be >= 1");
-      if (!(p.hole_margin >= 0.) || !(p.hole_margin <= 0.1))
-        throw InvalidParameter("Hole margin", text(p.hole_margin), "must be in [0, 0.1] m");
-      if (p.output_interval < 1)
-        throw InvalidParameter("Output interval", "0", "must be >= 1");
-      require_range("Servo gain", p.servo_gain, 1e-6, 1., "must be in [1e-6, 1]");
-      if (!(p.gauge_distance >= 0.) || !(p.gauge_distance <= 0.25 * o.width()))
+      if (p.gauge_distance > 0.25 * o.width())
         throw InvalidParameter("Gauge distance", text(p.gauge_distance),
-                               "must be in [0, a quarter of the beam's width] m (0: one horizon)");
+                               "must be in [0, a quarter of the body's width] m (0: one horizon)");
+      if (!scene.conditions.tractions.empty())
+        throw InvalidParameter("Traction", scene.conditions.tractions.front().place.name,
+                               "full PD drives a scene by one displacement: tractions cannot be applied (prescribe a "
+                               "displacement, or load through a point force, which becomes a loading pad)");
     }
+
+    /// The prescribed regions of the scene, with the displacement of each per unit control
+    /// displacement d (zero for supports), and the load factor of a state at d.
+    struct Drive
+    {
+      std::vector<local::PrescribedRegion>                     regions;
+      std::vector<std::function<Point(Point)>>                 unit;       ///< per region
+      std::vector<std::string>                                 place_name; ///< per region
+      std::vector<bool>                                        at_point;   ///< per region: a point's disk
+      bool                                                     pad = false; ///< d is a pad's displacement
+      Point                                                    force;       ///< the pad's force per unit lambda
+      double                                                   largest = 1.; ///< lambda-scaled displacements: d / lambda
+
+      Drive(const Scene &scene, double radius, double band)
+      {
+        for (const auto &d : scene.conditions.displacements)
+          {
+            regions.push_back(local::prescribed_region(d.place, d.ux.has_value(), d.uy.has_value(), radius, band));
+            place_name.push_back(d.place.name);
+            at_point.push_back(d.place.kind == conditions::Place::Kind::point);
+            unit.push_back([d](Point x) { return Point{d.ux ? (*d.ux)(x) : 0., d.uy ? (*d.uy)(x) : 0.}; });
+          }
+        double g = 0.;
+        for (std::size_t r = 0; r < regions.size(); ++r)
+          for (const auto &x : scene.conditions.displacements[r].place.points)
+            g = std::max(g, geometry::norm(unit[r](x)));
+        if (scene.conditions.forces.size() > 1 || (!scene.conditions.forces.empty() && g > 0.))
+          throw InvalidParameter("Point force", scene.conditions.forces.front().place.name,
+                                 "full PD drives a scene by one displacement: one point force (a loading pad), or "
+                                 "displacement conditions that lambda scales, not both or several forces");
+        if (!scene.conditions.forces.empty())
+          {
+            const auto &f = scene.conditions.forces.front();
+            pad           = true;
+            force         = f.force;
+            const Point e = (1. / geometry::norm(f.force)) * f.force;
+            regions.push_back(local::prescribed_region(f.place, f.force.x != 0., f.force.y != 0., radius, band));
+            place_name.push_back(f.place.name);
+            at_point.push_back(true);
+            unit.push_back([e](Point) { return e; });
+            return;
+          }
+        largest = g;
+        for (auto &u : unit)
+          u = [u, g](Point x) { return (1. / g) * u(x); };
+      }
+    };
 
     /// The material node nearest x.
     std::size_t nearest_node(const local::PdModel &model, Point x)
@@ -119,103 +180,166 @@ namespace pumpd::coupling
     }
   } // namespace
 
-  FullPdResult run_full_pd(const FullPdParameters &parameters, std::ostream &out)
+  FullPdResult run_full_pd(const Scene &scene, const FullPdSettings &settings, std::ostream &out)
   {
-    const FullPdParameters &p = parameters;
-    validate(p);
+    const auto &p  = settings.full_pd;
+    const auto &pd = settings.pd;
+    validate(scene, p);
     const auto   t0     = Clock::now();
-    const double h      = p.horizon / p.horizon_ratio;
-    const double radius = p.support_radius > 0. ? p.support_radius : p.horizon;
-    const double a_t    = p.target_advance > 0. ? p.target_advance : p.horizon;
-    const double a_max  = p.max_advance > 0. ? p.max_advance : 4. * p.horizon;
-    const geometry::Polyline reference = p.published_path.empty() ? geometry::Polyline{} : read_path(p.published_path);
+    const double h      = pd.spacing();
+    const double radius = p.support_radius > 0. ? p.support_radius : pd.horizon;
+    const double a_t    = p.target_advance > 0. ? p.target_advance : pd.horizon;
+    const double a_max  = p.max_advance > 0. ? p.max_advance : 4. * pd.horizon;
+    const double d_max  = p.max_displacement > 0. ? p.max_displacement : std::numeric_limits<double>::infinity();
+    if (p.max_advance > 0. && p.max_advance < a_t)
+      throw InvalidParameter("Maximum advance", text(p.max_advance),
+                             "must be 0 or at least the target advance (" + text(a_t) + " m)");
 
-    geometry::Body body{p.outline, p.holes};
-    local::Region  region{body, p.outline, {p.initial_crack}};
-    std::vector<local::PrescribedRegion> supports = {
-      local::PrescribedRegion::disk("Pin support", p.pin, radius, true, true),
-      local::PrescribedRegion::disk("Roller support", p.roller, radius, false, true),
-      local::PrescribedRegion::disk("Load point", p.load_point, radius, false, true)};
-    if (p.no_fail_radius > 0.)
-      for (auto &r : supports)
-        r.elastic_margin = std::max(0., p.no_fail_radius - radius);
-    const local::PdModel model(p.material, p.horizon, p.horizon_ratio, region, supports);
-    local::RegionDisplacement pin(model, 0), roller(model, 1), load(model, 2);
-    pin.set_target(Point{0., 0.});
-    roller.set_target(Point{0., 0.});
-    const local::DynamicRelaxation relax(model, p.tolerance, p.max_iterations);
+    // The crack, its mouth first: it is traced from its tip.
+    geometry::Polyline initial = scene.crack();
+    if (scene.body.clearance(initial.back()) < scene.body.clearance(initial.front()))
+      std::reverse(initial.begin(), initial.end());
+    const bool has_mouth = scene.body.clearance(initial.front()) <= 1e-8 * scene.body.bounding_box().width();
+    const bool by_mouth  = p.control == "crack mouth opening";
+    if (by_mouth && !has_mouth)
+      throw InvalidParameter("Control", p.control,
+                             "crack-mouth control needs a crack with a mouth on the outline or a hole's rim; use load point");
+
+    Drive drive(scene, radius, pd.horizon);
+    if (p.no_fail_horizons > 0.)
+      for (std::size_t r = 0; r < drive.regions.size(); ++r)
+        if (drive.at_point[r])
+          drive.regions[r].elastic_margin = std::max(0., p.no_fail_horizons * pd.horizon - radius);
+    const local::PdModel model(pd.material(scene.material), pd.horizon, pd.horizon_over_spacing,
+                               local::Region{scene.body, scene.body.bounding_box(), scene.cracks}, drive.regions);
+    std::vector<local::RegionDisplacement> prescribed;
+    std::vector<std::vector<Point>>        unit_at_node;
+    for (std::size_t r = 0; r < drive.regions.size(); ++r)
+      {
+        prescribed.emplace_back(model, r);
+        std::vector<Point> u;
+        for (std::size_t i : prescribed.back().nodes())
+          u.push_back(drive.unit[r](model.lattice().position(i)));
+        unit_at_node.push_back(u);
+      }
+    // The prescribed displacements at control displacement d.
+    const auto drive_to = [&](double d, local::State &st) {
+      for (std::size_t r = 0; r < prescribed.size(); ++r)
+        {
+          std::vector<double> ux, uy;
+          for (const auto &u : unit_at_node[r])
+            {
+              ux.push_back(d * u.x);
+              uy.push_back(d * u.y);
+            }
+          prescribed[r].set_target(ux, uy);
+          prescribed[r].apply(st, 1.);
+        }
+    };
+    // The scene's load factor, load and displacement of a state at control displacement d.
+    const auto lambda_of = [&](double d, const local::State &st) {
+      if (!drive.pad)
+        return d / drive.largest;
+      const Point f = prescribed.back().reaction(st);
+      return geometry::dot(f, drive.force) / geometry::dot(drive.force, drive.force);
+    };
+    const auto report = [&](double lambda, const local::State &st) {
+      const auto &r     = scene.report;
+      const auto  pick  = [](Point v, int c) { return c == 0 ? v.x : v.y; };
+      double      load  = lambda, displacement = 0.;
+      if (!r.load_is_lambda)
+        {
+          Point f;
+          for (std::size_t k = 0; k < prescribed.size(); ++k)
+            if (drive.place_name[k] == r.load_place.name)
+              f = f + prescribed[k].reaction(st);
+          load = r.load_sign * pick(f, r.load_component);
+        }
+      if (r.work_conjugate)
+        displacement = lambda != 0. ? 2. * model.elastic_energy(st) / lambda : 0.;
+      else if (r.displacement_place.kind == conditions::Place::Kind::point)
+        {
+          const std::size_t i = nearest_node(model, r.displacement_place.points.front());
+          displacement        = r.displacement_sign * pick(Point{st.ux[i], st.uy[i]}, r.displacement_component);
+        }
+      else
+        {
+          Point       sum;
+          std::size_t n = 0;
+          for (std::size_t i : model.nodes())
+            for (const auto &e : r.displacement_place.edges)
+              if (geometry::distance_to_segment(model.lattice().position(i), e[0], e[1]) < h)
+                {
+                  sum = sum + Point{st.ux[i], st.uy[i]};
+                  ++n;
+                  break;
+                }
+          displacement = n > 0 ? r.displacement_sign * pick((1. / n) * sum, r.displacement_component) : 0.;
+        }
+      return std::pair<double, double>{load, displacement};
+    };
+    const local::DynamicRelaxation relax(model, pd.tolerance, pd.max_iterations);
     const double                   n_nodes = double(model.nodes().size());
 
-    const Point tip0 = p.initial_crack.back();
-    Point       dir0 = tip0 - p.initial_crack[p.initial_crack.size() - 2];
+    const Point tip0 = initial.back();
+    Point       dir0 = tip0 - initial[initial.size() - 2];
     dir0             = (1. / geometry::norm(dir0)) * dir0;
     ExtractionSettings extraction;
-    extraction.threshold = p.crack_damage;
-    extraction.horizon   = p.horizon;
-    const double length0 = geometry::length(p.initial_crack);
+    extraction.threshold = pd.crack_damage;
+    extraction.horizon   = pd.horizon;
+    const double length0 = geometry::length(initial);
 
     // Crack-mouth opening w: the relative displacement of two gauge nodes either side of the
-    // mouth, along the normal to the initial crack.
-    const Point mouth_dir = (1. / geometry::norm(p.initial_crack[1] - p.initial_crack[0])) *
-                            (p.initial_crack[1] - p.initial_crack[0]);
+    // mouth, along the normal to the crack's first segment.
+    const Point mouth_dir = (1. / geometry::norm(initial[1] - initial[0])) * (initial[1] - initial[0]);
     const Point       normal{mouth_dir.y, -mouth_dir.x};
-    const double      gauge = p.gauge_distance > 0. ? p.gauge_distance : p.horizon;
-    const std::size_t gauge_minus = nearest_node(model, p.initial_crack[0] - gauge * normal);
-    const std::size_t gauge_plus  = nearest_node(model, p.initial_crack[0] + gauge * normal);
-    const auto mouth_opening = [&](const local::State &st) {
-      return (st.ux[gauge_plus] - st.ux[gauge_minus]) * normal.x +
-             (st.uy[gauge_plus] - st.uy[gauge_minus]) * normal.y;
+    const double      gauge       = p.gauge_distance > 0. ? p.gauge_distance : pd.horizon;
+    const std::size_t gauge_minus = nearest_node(model, initial[0] - gauge * normal);
+    const std::size_t gauge_plus  = nearest_node(model, initial[0] + gauge * normal);
+    const auto        mouth_opening = [&](const local::State &st) {
+      return (st.ux[gauge_plus] - st.ux[gauge_minus]) * normal.x + (st.uy[gauge_plus] - st.uy[gauge_minus]) * normal.y;
     };
-    const bool by_mouth = p.control == FullPdParameters::Control::crack_mouth_opening;
 
     // Nodes near the initial tip: their stretch ratio decides the elastic jump (the pads' own
     // stress concentrations do not).
     std::vector<std::size_t> near_tip;
     for (std::size_t i : model.nodes())
-      if (geometry::norm(model.lattice().position(i) - tip0) < 2. * p.horizon)
+      if (geometry::norm(model.lattice().position(i) - tip0) < 2. * pd.horizon)
         near_tip.push_back(i);
 
-    std::unique_ptr<local::PvdSeries> series;
-    std::ofstream                     table;
-    if (!p.output_directory.empty())
-      {
-        std::filesystem::create_directories(p.output_directory);
-        series = std::make_unique<local::PvdSeries>(p.output_directory, "pd");
-        write_body(p.output_directory + "/body.csv", body, {{"pin", p.pin}, {"roller", p.roller}, {"load", p.load_point}});
-        if (!reference.empty())
-          write_path(p.output_directory + "/reference_path.csv", reference);
-        write_path(p.output_directory + "/crack_path.csv", p.initial_crack);
-        table.open(p.output_directory + "/load_steps.csv");
-        table << "step,load_point_displacement_m,crack_mouth_opening_m,load_N_per_m,crack_length_m,tip_x_m,tip_y_m,"
-                 "dr_iterations,dr_converged,repeats,seconds\n";
-      }
-    out << "full PD: beam " << p.outline.width() << " x " << p.outline.height() << " m, " << p.holes.size()
-        << " holes, initial crack " << length0 << " m; delta " << p.horizon << " m, m = " << p.horizon_ratio
-        << ", h = " << h << " m: " << model.nodes().size() << " nodes; supports and load pad of radius " << radius
-        << " m (" << model.prescribed_nodes(0).size() << ", " << model.prescribed_nodes(1).size() << ", "
-        << model.prescribed_nodes(2).size() << " nodes), no-fail radius " << p.no_fail_radius << " m ("
-        << model.linear_bond_count() << " linear bonds); K_c = " << model.material().critical_sif() << " Pa m^1/2\n";
+    Recorder recorder(scene);
+    CsvFile  table = recorder.table("load_steps.csv", "step,control_displacement_m,crack_mouth_opening_m,lambda,load,"
+                                                     "displacement,crack_length_m,tip_x_m,tip_y_m,dr_iterations,"
+                                                     "dr_converged,repeats,seconds");
+    recorder.crack_path(initial);
+    std::size_t prescribed_nodes = 0;
+    for (const auto &r : prescribed)
+      prescribed_nodes += r.size();
+    out << "full PD: " << scene.mesh_file << ", " << scene.body.holes().size() << " holes, initial crack " << length0
+        << " m; delta " << pd.horizon << " m, m = " << pd.horizon_over_spacing << ", h = " << h << " m: "
+        << model.nodes().size() << " nodes; " << prescribed.size() << " prescribed regions (" << prescribed_nodes
+        << " nodes), " << (drive.pad ? "a loading pad" : "lambda-scaled displacements") << ", no-fail radius "
+        << p.no_fail_horizons * pd.horizon << " m (" << model.linear_bond_count()
+        << " linear bonds); K_c = " << model.material().critical_sif() << " Pa m^1/2" << std::endl;
 
     FullPdResult result;
-    result.nodes = model.nodes().size();
-    result.path  = p.initial_crack;
+    result.nodes   = model.nodes().size();
+    result.path    = initial;
     local::State s = model.initial_state();
-    // The damage the crack is traced through: per node the largest of the accepted states. Softened
-    // bonds behind the tip relax again when the load falls after the peak (the softening is
-    // elastic up to the break stretch), but the crack they marked stays.
-    DamageField traced;
+    // The damage the crack is traced through: per node the largest of the accepted states.
+    DamageField         traced;
     std::vector<double> ux_prev(s.ux.size(), 0.), uy_prev(s.uy.size(), 0.); // last accepted state
-    // d: the controlled displacement (load point, or crack-mouth opening once the servo is on);
-    // pad: the load point's displacement.
+    // d: the controlled displacement (the drive, or the crack-mouth opening once the servo is on);
+    // pad: the drive's displacement.
     double      d = 0., dd_prev = 0., pad = 0., pad_prev = 0.;
     bool        servo_on   = false;
     double      pad_over_w = 0.; // (d/w)_0 of the servo
-    double      dd         = 0.01 * p.max_displacement; // reference state of the elastic phase
-    bool        elastic    = true;
-    bool        grown      = false;
-    std::size_t stalled    = 0;
-    double      length     = length0;
-    double      growth_t0  = 0.;
+    double      dd = 0.01 * (p.max_displacement > 0. ? p.max_displacement : 1e-2 * scene.body.bounding_box().width());
+    bool        elastic   = true;
+    bool        grown     = false;
+    std::size_t stalled   = 0;
+    double      length    = length0;
+    double      growth_t0 = 0.;
 
     for (std::size_t n = 1;; ++n)
       {
@@ -224,13 +348,13 @@ namespace pumpd::coupling
             result.stop_reason = "maximum steps";
             break;
           }
-        if (pad >= p.max_displacement * (1. - 1e-12))
+        if (pad >= d_max * (1. - 1e-12))
           {
             result.stop_reason = "maximum displacement";
             break;
           }
         if (!servo_on)
-          dd = std::min(dd, p.max_displacement - d);
+          dd = std::min(dd, d_max - d);
         const auto   t_step = Clock::now();
         FullPdStep   step;
         step.step = n;
@@ -265,17 +389,14 @@ namespace pumpd::coupling
               }
             else if (servo_on)
               pad_new = pad + pad_over_w * dd;
-            load.set_target(Point{0., -pad_new});
-            pin.apply(s, 1.);
-            roller.apply(s, 1.);
-            load.apply(s, 1.);
+            drive_to(pad_new, s);
             local::Servo servo;
             if (servo_on)
               {
-                // The opening misses its target by e: move the pad by (d/w) e and, with it, the
+                // The opening misses its target by e: move the drive by (d/w) e and, with it, the
                 // whole body along the secant mode saved / pad (the last accepted state per unit
-                // pad displacement), so that the beam's bending follows the pad at once instead of
-                // over the relaxation's slowest period; the relaxation then settles the rest.
+                // drive displacement), so that the body follows the drive at once instead of over
+                // the relaxation's slowest period; the relaxation then settles the rest.
                 servo.tolerance = 0.1 * dd / d_new;
                 servo.correct   = [&](local::State &st) {
                   const double error = d_new - mouth_opening(st);
@@ -289,8 +410,7 @@ namespace pumpd::coupling
                       st.uy[i] += share * saved.uy[i];
                     }
                   pad_new += move;
-                  load.set_target(Point{0., -pad_new});
-                  load.apply(st, 1.);
+                  drive_to(pad_new, st);
                   return std::abs(d_new - mouth_opening(st)) / d_new;
                 };
               }
@@ -350,10 +470,10 @@ namespace pumpd::coupling
           stop = "crack branching, refused: " + branching;
         else
           {
-            geometry::Polyline path = p.initial_crack;
+            geometry::Polyline path = initial;
             for (std::size_t k = 1; k < increment.path.size(); ++k)
               path.push_back(increment.path[k]);
-            auto arrival = arrive(path, body, p.hole_margin, p.horizon, p.initial_crack.size());
+            auto arrival = arrive(path, scene.body, settings.growth.hole_margin, pd.horizon, initial.size());
             result.path  = arrival.path;
             stop         = arrival.reason;
           }
@@ -392,8 +512,8 @@ namespace pumpd::coupling
           dd = std::clamp(dd, p.min_increment * d, p.max_increment * d);
         if (growth > 0. && !grown)
           {
-            grown      = true;
-            growth_t0  = seconds_since(t0);
+            grown     = true;
+            growth_t0 = seconds_since(t0);
           }
         stalled = grown && growth == 0. ? stalled + 1 : 0;
         if (stop.empty() && stalled >= p.stall_steps)
@@ -401,35 +521,35 @@ namespace pumpd::coupling
 
         step.displacement  = pad;
         step.mouth_opening = mouth_opening(s);
-        step.load          = -load.reaction(s).y;
-        step.crack_length  = length;
-        step.tip           = result.path.back();
-        step.seconds       = seconds_since(t_step);
+        step.lambda        = lambda_of(pad, s);
+        std::tie(step.load, step.reported_displacement) = report(step.lambda, s);
+        step.crack_length = length;
+        step.tip          = result.path.back();
+        step.seconds      = seconds_since(t_step);
         result.steps.push_back(step);
-        if (table)
-          {
-            table << std::setprecision(10) << n << "," << pad << "," << step.mouth_opening << "," << step.load << ","
-                  << length << "," << step.tip.x << "," << step.tip.y << "," << step.iterations << ","
-                  << step.converged << "," << step.repeats << "," << step.seconds << "\n";
-            table.flush();
-            write_path(p.output_directory + "/crack_path.csv", result.path);
-          }
-        const bool last = !stop.empty() || n >= p.max_steps || pad >= p.max_displacement * (1. - 1e-12);
-        if (series && (n % p.output_interval == 0 || last))
-          series->add(model, s);
+        table.row(n, pad, step.mouth_opening, step.lambda, step.load, step.reported_displacement, length, step.tip.x,
+                  step.tip.y, step.iterations, step.converged, step.repeats, step.seconds);
+        recorder.load_displacement(n, step.lambda, step.load, step.reported_displacement, length, step.tip);
+        recorder.crack_path(result.path);
+        const bool last = !stop.empty() || n >= p.max_steps || pad >= d_max * (1. - 1e-12);
+        if (n % p.output_interval == 0 || last)
+          recorder.pd_state(model, s);
 
         // ETA: growth rate against the tip's clearance once the crack grows, else the
         // displacement still to go.
         const double elapsed = seconds_since(t0);
-        double       eta     = pad > 0. ? elapsed / pad * (p.max_displacement - pad) : 0.;
+        double       eta     = pad > 0. && std::isfinite(d_max) ? elapsed / pad * (d_max - pad) : 0.;
         if (grown && length > length0)
-          eta = std::min(eta, (elapsed - growth_t0 + 1e-9) / (length - length0) *
-                                std::max(0., clearance(result.path.back(), body) - p.hole_margin));
+          {
+            const double left = std::max(0., scene.body.clearance(result.path.back()) - settings.growth.hole_margin);
+            eta = std::isfinite(d_max) ? std::min(eta, (elapsed - growth_t0 + 1e-9) / (length - length0) * left)
+                                       : (elapsed - growth_t0 + 1e-9) / (length - length0) * left;
+          }
         out << "step " << std::setw(3) << n << "  d " << std::setprecision(4) << std::setw(9) << 1e3 * pad << " mm  w "
-            << std::setw(9) << 1e3 * step.mouth_opening << " mm  load "
-            << std::setw(9) << step.load << " N/m  crack " << std::setw(7) << 1e3 * length << " mm (+"
-            << 1e3 * growth << ")  tip " << to_text(step.tip) << "  DR " << step.iterations
-            << (step.converged ? "" : " (not converged)") << (step.repeats ? "  repeats " + std::to_string(step.repeats) : "")
+            << std::setw(9) << 1e3 * step.mouth_opening << " mm  lambda " << std::setw(9) << step.lambda << "  crack "
+            << std::setw(7) << 1e3 * length << " mm (+" << 1e3 * growth << ")  tip " << to_text(step.tip) << "  DR "
+            << step.iterations << (step.converged ? "" : " (not converged)")
+            << (step.repeats ? "  repeats " + std::to_string(step.repeats) : "")
             << (elastic ? "  elastic, Z_tip " + text(z_tip) : "") << "  " << std::fixed << std::setprecision(1)
             << step.seconds << " s  ETA ~" << std::setprecision(0) << eta << " s" << std::defaultfloat
             << std::setprecision(6) << (growth > 0. ? "  (tracing: " + increment.stop_reason + ")" : "") << std::endl;
@@ -446,7 +566,7 @@ namespace pumpd::coupling
     for (const auto &st : result.steps)
       iterations += st.iterations;
     out << "end: " << result.stop_reason << "; crack " << geometry::length(result.path) << " m, tip at "
-        << to_text(result.path.back()) << ", load-point displacement " << pad << " m, " << result.steps.size()
+        << to_text(result.path.back()) << ", control displacement " << pad << " m, " << result.steps.size()
         << " steps, " << result.seconds << " s\n";
     out << "pumpd-metric fullpd.nodes " << model.nodes().size() << "\n"
         << "pumpd-metric fullpd.node_steps " << result.node_steps << "\n"
@@ -456,11 +576,11 @@ namespace pumpd::coupling
         << "pumpd-metric fullpd.seconds_total " << result.seconds << "\n"
         << "pumpd-metric fullpd.peak_rss_mb " << result.peak_rss_mb << "\n"
         << "pumpd-metric fullpd.crack_length_m " << geometry::length(result.path) << "\n";
-    if (!reference.empty())
+    if (!scene.reference_path.empty())
       {
-        const auto dist            = published_distance(result.path, reference, 0.1 * h);
-        result.published_mean      = dist.mean;
-        result.published_hausdorff = dist.hausdorff;
+        const auto dist            = published_distance(result.path, scene.reference_path, 0.1 * h);
+        result.reference_mean      = dist.mean;
+        result.reference_hausdorff = dist.hausdorff;
         out << "pumpd-metric fullpd.mean_dev_mm " << 1e3 * dist.mean << "\n"
             << "pumpd-metric fullpd.hausdorff_mm " << 1e3 * dist.hausdorff << "\n";
       }

@@ -1,13 +1,22 @@
-// The parameters of a pumpd scene file (deal.II ParameterHandler format): declared once, with
-// default, allowed range and documentation, and read into the scenes' parameter structs.
+// Every parameter of a pumpd scene file (deal.II ParameterHandler format). Each section is
+// declared by the settings struct that owns it (ParameterHandler::add_parameter, deal.II
+// step-69): the struct's value is the only default, the pattern the only range.
+//   Method               Type: which method computes the scene
+//   Scene                the specimen: mesh, material, boundary conditions, cracks, report (scene.h)
+//   Global               XFEM (global_problem.h)
+//   Peridynamics         the PD body (pd_settings.h)
+//   Crack growth         where growth stops (growth_settings.h)
+//   LEFM growth, Global-local, Full PD, Edge crack   each method's own
 #pragma once
 
+#include <iosfwd>
 #include <string>
 
 #include "full_pd.h"
 #include "global_local.h"
 #include "lefm_growth.h"
 #include "pd_edge_crack.h"
+#include "scene.h"
 
 namespace dealii
 {
@@ -16,15 +25,32 @@ namespace dealii
 
 namespace pumpd::coupling
 {
-  void declare_parameters(dealii::ParameterHandler &prm);
+  struct Parameters
+  {
+    std::string           method = "global-local";
+    SceneSettings         scene;
+    GlobalSettings        global;
+    PeridynamicsSettings  pd;
+    GrowthSettings        growth;
+    LefmSettings          lefm;
+    CycleSettings         cycle;
+    FullPdControlSettings full_pd;
+    EdgeCrackSettings     edge_crack;
 
-  /// The value of "Scene/Type".
-  std::string scene_type(dealii::ParameterHandler &prm);
-  /// "Scene/Output directory".
-  std::string output_directory(dealii::ParameterHandler &prm);
+    void add_parameters(dealii::ParameterHandler &prm);
 
-  EdgeCrackParameters  read_edge_crack(dealii::ParameterHandler &prm);
-  LefmGrowthParameters read_lefm_growth(dealii::ParameterHandler &prm);
-  GlobalLocalParameters read_global_local(dealii::ParameterHandler &prm);
-  FullPdParameters      read_full_pd(dealii::ParameterHandler &prm);
+    LefmGrowthSettings  lefm_growth_settings() const { return {global, growth, lefm}; }
+    GlobalLocalSettings global_local_settings() const { return {global, pd, growth, cycle}; }
+    FullPdSettings      full_pd_settings() const { return {pd, growth, full_pd}; }
+  };
+
+  /// The parameters of a scene file. Throws deal.II's exceptions for a malformed file, an unknown
+  /// entry or a value outside its pattern (each names the entry).
+  Parameters read_parameters(const std::string &file);
+  /// The same from the text of a scene file (tests).
+  Parameters parse_parameters(const std::string &text);
+
+  /// Runs the method on the scene: builds the scene from the mesh, then calls run_lefm_growth,
+  /// run_global_local, run_full_pd or run_edge_crack. Progress and a closing line to `out`.
+  void run(const Parameters &parameters, std::ostream &out);
 } // namespace pumpd::coupling

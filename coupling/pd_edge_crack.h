@@ -14,24 +14,34 @@
 
 #include "geometry.h"
 #include "material.h"
+#include "pd_settings.h"
+
+namespace dealii
+{
+  class ParameterHandler;
+}
 
 namespace pumpd::coupling
 {
+  /// The section `Edge crack`.
+  struct EdgeCrackSettings
+  {
+    double       box_size        = 0.096; ///< side of the square box [m]; the tip sits at its centre
+    double       k_start         = 0.6;   ///< first K / K_c
+    double       k_end           = 1.4;   ///< last K / K_c
+    unsigned int load_steps      = 17;
+    double       growth_to_stop  = 0.;    ///< stop once the crack grew this far [m] (0: run all steps)
+    unsigned int output_interval = 1;     ///< VTU every n load steps
+
+    void add_parameters(dealii::ParameterHandler &prm);
+  };
+
   struct EdgeCrackParameters
   {
     local::MaterialParameters material;
-    double      horizon         = 0.004; ///< delta [m]
-    int         horizon_ratio   = 4;     ///< m = delta / h
-    double      box_size        = 0.096; ///< side of the square box [m]; the tip sits at its centre
-    double      k_start         = 0.6;   ///< first K / K_c
-    double      k_end           = 1.4;   ///< last K / K_c
-    std::size_t load_steps      = 17;
-    double      tolerance       = 1e-6;  ///< dynamic relaxation, relative residual
-    std::size_t max_iterations  = 200000;
-    double      crack_damage    = 0.3;   ///< damage above which a node is on the crack
-    double      growth_to_stop  = 0.;    ///< stop once the crack grew this far [m] (0: run all steps)
-    std::string output_directory;        ///< "" = no files
-    std::size_t output_interval = 1;     ///< VTU every n load steps
+    PeridynamicsSettings      pd;
+    EdgeCrackSettings         edge;
+    std::string               output_directory; ///< "" = no files
   };
 
   struct EdgeCrackStep

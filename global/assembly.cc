@@ -13,8 +13,10 @@
 #include <Epetra_MultiVector.h>
 #include <Teuchos_ParameterList.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <optional>
+#include <set>
 
 #include "elasticity_impl.h"
 #include "error.h"
@@ -148,7 +150,8 @@ namespace pumpd::global
     // (the traction and the enriched functions jump there); the side of each point comes from
     // the crack's level set.
     const QGauss<1>  face_rule(settings.tip_order);
-    const UpdateFlags face_flags = update_values | update_gradients | update_quadrature_points | update_JxW_values;
+    const UpdateFlags face_flags =
+      update_values | update_gradients | update_quadrature_points | update_JxW_values | update_normal_vectors;
     for (const auto &bc : tractions)
       for (const auto &cell : dof_handler.active_cell_iterators())
         for (const auto f : cell->face_indices())
@@ -191,7 +194,7 @@ namespace pumpd::global
               F.reinit(2 * functions.size());
               for (unsigned int q = 0; q < rule.size(); ++q)
                 {
-                  const auto t = bc.value(to_point(fv_face.quadrature_point(q)));
+                  const auto t = bc.value(to_point(fv_face.quadrature_point(q)), geometry::Point{fv_face.normal_vector(q)[0], fv_face.normal_vector(q)[1]});
                   for (unsigned int a = 0; a < functions.size(); ++a)
                     {
                       F(2 * a) += t.x * face_basis.value[a][q] * fv_face.JxW(q);
@@ -220,6 +223,66 @@ namespace pumpd::global
           throw InvalidParameter("Point load position", "(" + std::to_string(load.at.x) + ", " + std::to_string(load.at.y) + ")",
                                  "must be a vertex of the mesh");
       }
+  }
+
+  std::vector<unsigned int> EnrichedElasticity::Impl::boundary_nodes(unsigned int boundary_id) const
+  {
+    std::set<unsigned int> found;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      for (const auto f : cell->face_indices())
+        if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == boundary_id)
+          for (unsigned int v = 0; v < 2; ++v)
+            for (const auto &pw : parents[cell->face(f)->vertex_dof_index(v, 0)])
+              found.insert(pw.first);
+    return {found.begin(), found.end()};
+  }
+
+  // R_c = sum_{p in set} a(u_h, phi_p e_c) - f_c(p): the standard function phi_p of each node is
+  // in the enriched space, so the discrete equilibrium a(u_h, v) = f(v) fails on it by exactly the
+  // force the constraints exert there.
+  geometry::Point EnrichedElasticity::Impl::reaction(const std::vector<unsigned int> &node_set) const
+  {
+    const std::set<unsigned int> in_set(node_set.begin(), node_set.end());
+    const double                 lambda = material.lambda(), mu = material.mu();
+    const UpdateFlags            flags  = update_values | update_gradients | update_quadrature_points | update_JxW_values;
+    geometry::Point              force;
+    BasisValues                  basis;
+    std::vector<int>             side;
+    std::vector<Tensor<1, 2>>    u;
+    std::vector<Tensor<2, 2>>    grad;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        const auto functions = local_functions(cell);
+        if (std::none_of(functions.begin(), functions.end(),
+                         [&](const LocalFunction &f) { return f.kind < 0 && in_set.count(f.dof / 2); }))
+          continue;
+        FEValues<2> fv(mapping, fe, quadrature(cell), flags);
+        fv.reinit(cell);
+        side.resize(fv.n_quadrature_points);
+        for (unsigned int q = 0; q < side.size(); ++q)
+          side[q] = crack ? side_at(cell, q, fv.quadrature_point(q)) : 1;
+        evaluate(fv, functions, side, basis);
+        field(fv, functions, side, u, grad);
+        for (unsigned int q = 0; q < side.size(); ++q)
+          {
+            const Tensor<2, 2> eps   = 0.5 * (grad[q] + transpose(grad[q]));
+            Tensor<2, 2>       sigma = 2. * mu * eps;
+            sigma[0][0] += lambda * trace(eps);
+            sigma[1][1] += lambda * trace(eps);
+            for (unsigned int f = 0; f < functions.size(); ++f)
+              if (functions[f].kind < 0 && in_set.count(functions[f].dof / 2))
+                {
+                  const Tensor<1, 2> t = sigma * basis.grad[f][q];
+                  force.x += t[0] * fv.JxW(q);
+                  force.y += t[1] * fv.JxW(q);
+                }
+          }
+      }
+    for (const auto &load : point_loads)
+      for (const auto p : node_set)
+        if (geometry::norm(to_point(support[nodes[p]]) - load.at) <= 1e-6 * GridTools::minimal_cell_diameter(tria))
+          force = force - load.force;
+    return force;
   }
 
   namespace

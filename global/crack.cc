@@ -42,18 +42,17 @@ namespace pumpd::global
     /// a rotated by +90 degrees: the left normal of a direction.
     Point left_normal(Point a) { return {-a.y, a.x}; }
 
-    /// Distance from p to the boundary of the rectangle (p inside, or outside by a little).
-    double distance_to_outline(Point p, const geometry::Box &b)
+    /// Outside the outline by more than the tolerance.
+    bool outside(Point p, const geometry::Body &body, double tolerance)
     {
-      return std::min({p.x - b.x_min, b.x_max - p.x, p.y - b.y_min, b.y_max - p.y});
+      return !body.outline().encloses(p) && body.outline().distance(p) > tolerance;
     }
 
-    /// Holes shrunk by the tolerance: touching a hole's circle is allowed, entering it is not.
-    bool meets_hole(Point a, Point b, const geometry::Body &body, double tolerance)
+    /// Inside a hole by more than the tolerance: touching a hole's rim is allowed.
+    bool in_hole(Point p, const geometry::Body &body, double tolerance)
     {
-      return std::any_of(body.holes.begin(), body.holes.end(), [&](const geometry::Circle &c) {
-        return geometry::segment_meets_disk(a, b, {c.centre, c.radius - tolerance});
-      });
+      return std::any_of(body.holes().begin(), body.holes().end(),
+                         [&](const geometry::Loop &hole) { return hole.encloses(p) && hole.distance(p) > tolerance; });
     }
 
     /// True if the segments e1 (ending at a vertex) and e2 (starting there) fold back onto each other.
@@ -118,12 +117,12 @@ namespace pumpd::global
         const std::string  name = "Crack vertex " + std::to_string(k);
         if (!std::isfinite(p.x) || !std::isfinite(p.y))
           throw InvalidParameter(name, to_text(p), "must be finite");
-        if (!body.outline.contains(p, tol))
+        if (outside(p, body, tol))
           throw InvalidParameter(name, to_text(p), "lies outside the body outline");
-        if (meets_hole(p, p, body, tol))
+        if (in_hole(p, body, tol))
           throw InvalidParameter(name, to_text(p), "lies inside a hole");
-        if (k > 0 && k + 1 < points.size() && distance_to_outline(p, body.outline) <= tol)
-          throw InvalidParameter(name, to_text(p), "only an end of the crack may lie on the body outline");
+        if (k > 0 && k + 1 < points.size() && body.clearance(p) <= tol)
+          throw InvalidParameter(name, to_text(p), "only an end of the crack may lie on the body outline or a hole's rim");
         if (k > 0 && norm(p - points[k - 1]) <= tol)
           throw InvalidParameter(name, to_text(p), "repeats the previous vertex (consecutive vertices must differ)");
       }
@@ -135,13 +134,13 @@ namespace pumpd::global
       throw InvalidParameter("Crack", "polyline of " + std::to_string(points.size()) + " vertices",
                              "must not intersect itself");
     for (std::size_t s = 0; s + 1 < points.size(); ++s)
-      if (meets_hole(points[s], points[s + 1], body, tol))
-        throw InvalidParameter("Crack segment " + std::to_string(s),
-                               to_text(points[s]) + " - " + to_text(points[s + 1]), "passes through a hole");
+      if (const auto c = body.crossing(points[s], points[s + 1], tol); c != geometry::Body::Crossing::none)
+        throw InvalidParameter("Crack segment " + std::to_string(s), to_text(points[s]) + " - " + to_text(points[s + 1]),
+                               c == geometry::Body::Crossing::hole ? "passes through a hole" : "crosses the body outline");
     update_tips();
     if (tip_list.empty())
       throw InvalidParameter("Crack", to_text(points.front()) + " ... " + to_text(points.back()),
-                             "both ends lie on the body outline (no tip: the body is cut through)");
+                             "both ends lie on the body outline or a hole's rim (no tip: the body is cut through)");
   }
 
   double Crack::length() const { return geometry::length(points); }
@@ -217,12 +216,12 @@ namespace pumpd::global
     const std::string from      = " (from the tip at " + to_text(tip.position) + ")";
     if (!std::isfinite(p.x) || !std::isfinite(p.y))
       throw InvalidParameter(name, to_text(p), "must be finite");
-    if (!body.outline.contains(p, tol))
+    if (outside(p, body, tol))
       throw InvalidParameter(name, to_text(p), "leaves the body outline" + from);
     if (norm(p - tip.position) <= tol)
       throw InvalidParameter(name, to_text(p), "must differ from the tip position" + from);
-    if (meets_hole(tip.position, p, body, tol))
-      throw InvalidParameter(name, to_text(p), "enters a hole" + from);
+    if (const auto c = body.crossing(tip.position, p, tol); c != geometry::Body::Crossing::none)
+      throw InvalidParameter(name, to_text(p), (c == geometry::Body::Crossing::hole ? "enters a hole" : "leaves the body outline") + from);
     // The new segment shares the tip vertex with the end segment, so it must not fold back onto
     // it; it must not touch any other segment.
     if (folds_back(tip.position - points[neighbour], p - tip.position))
@@ -244,9 +243,9 @@ namespace pumpd::global
   {
     tip_list.clear();
     const std::size_t last = points.size() - 1;
-    if (distance_to_outline(points.front(), body.outline) > tol)
+    if (body.clearance(points.front()) > tol)
       tip_list.push_back({points.front(), unit(points.front() - points[1]), 0});
-    if (distance_to_outline(points.back(), body.outline) > tol)
+    if (body.clearance(points.back()) > tol)
       tip_list.push_back({points.back(), unit(points.back() - points[last - 1]), last});
   }
 } // namespace pumpd::global

@@ -1,7 +1,7 @@
 // A crack in the global problem: a polyline that grows at its tips (DESIGN.md, global/).
 // Plain geometry, no deal.II: level sets, tip frames and the enrichment functions' values.
 //
-// Ends: an end on the body outline is a mouth (edge crack), any other end is a tip. Level sets:
+// Ends: an end on the body's boundary (outline or a hole's rim) is a mouth, any other end a tip. Level sets:
 //   phi(x): signed distance to the crack extended by the rays tangent to its end segments;
 //           + on the left of the polyline (walking from the first to the last vertex). At a point
 //           whose nearest crack point is an interior vertex the sign comes from the
@@ -18,7 +18,7 @@
 #include <cstddef>
 #include <vector>
 
-#include "geometry.h"
+#include "body.h"
 
 namespace pumpd::global
 {
@@ -43,7 +43,8 @@ namespace pumpd::global
   public:
     /// Throws InvalidParameter ("Crack", with the reason) if there are fewer than 2 vertices, two
     /// consecutive vertices coincide, the polyline intersects itself, a vertex lies outside the
-    /// body outline or inside a hole, or no end is a tip. tolerance decides "on the outline".
+    /// body outline or inside a hole, a segment crosses the outline or a hole, or no end is a
+    /// tip. tolerance decides "on the boundary".
     Crack(geometry::Polyline vertices, const geometry::Body &body, double tolerance);
 
     const geometry::Polyline &vertices() const { return points; }

@@ -87,7 +87,20 @@ namespace pumpd::global
     impl->vertex_dirichlet.push_back({at, value, fix_x, fix_y});
   }
 
+  void EnrichedElasticity::add_dirichlet_region(unsigned int material_id,
+                                                std::function<geometry::Point(geometry::Point)> value, bool fix_x,
+                                                bool fix_y)
+  {
+    impl->region_dirichlet.push_back({material_id, std::move(value), fix_x, fix_y});
+  }
+
   void EnrichedElasticity::add_traction(unsigned int id, std::function<geometry::Point(geometry::Point)> t)
+  {
+    impl->tractions.push_back({id, [t = std::move(t)](geometry::Point x, geometry::Point) { return t(x); }});
+  }
+
+  void EnrichedElasticity::add_traction(unsigned int id,
+                                        std::function<geometry::Point(geometry::Point, geometry::Point)> t)
   {
     impl->tractions.push_back({id, std::move(t)});
   }
@@ -118,6 +131,35 @@ namespace pumpd::global
     return impl->displacement(x, side);
   }
 
+  geometry::Point EnrichedElasticity::mean_displacement(unsigned int boundary_id) const
+  {
+    const auto nodes = impl->boundary_nodes(boundary_id);
+    if (nodes.empty())
+      throw InvalidParameter("Displacement boundary id", std::to_string(boundary_id), "no boundary face has it");
+    geometry::Point sum;
+    for (const auto p : nodes)
+      sum = sum + geometry::Point{impl->solution(2 * p), impl->solution(2 * p + 1)};
+    return (1. / nodes.size()) * sum;
+  }
+
+  geometry::Point EnrichedElasticity::reaction(unsigned int boundary_id) const
+  {
+    const auto nodes = impl->boundary_nodes(boundary_id);
+    if (nodes.empty())
+      throw InvalidParameter("Reaction boundary id", std::to_string(boundary_id), "no boundary face has it");
+    return impl->reaction(nodes);
+  }
+
+  geometry::Point EnrichedElasticity::reaction_at(geometry::Point vertex) const
+  {
+    const double tol = 1e-6 * GridTools::minimal_cell_diameter(impl->tria);
+    for (unsigned int p = 0; p < impl->nodes.size(); ++p)
+      if (geometry::norm(to_point(impl->support[impl->nodes[p]]) - vertex) <= tol)
+        return impl->reaction({p});
+    throw InvalidParameter("Reaction vertex", "(" + std::to_string(vertex.x) + ", " + std::to_string(vertex.y) + ")",
+                           "must be a vertex of the mesh");
+  }
+
   void EnrichedElasticity::prepare_point_evaluation(const std::vector<geometry::Point> &points,
                                                     const std::vector<int>             &side)
   {
@@ -136,6 +178,8 @@ namespace pumpd::global
   {
     return impl->stress_intensity_factors(radius_factor);
   }
+
+  double EnrichedElasticity::strain_energy() const { return impl->strain_energy(); }
 
   void EnrichedElasticity::write_vtu(const std::string &filename) const { impl->write_vtu(filename); }
 } // namespace pumpd::global

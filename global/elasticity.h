@@ -113,7 +113,12 @@ namespace pumpd::global
 
     void add_dirichlet(unsigned int boundary_id, SidedField value, bool fix_x = true, bool fix_y = true);
     void add_dirichlet_vertex(geometry::Point at, geometry::Point value, bool fix_x = true, bool fix_y = true);
+    /// Every node of the cells with this material id (a named region of the mesh).
+    void add_dirichlet_region(unsigned int material_id, std::function<geometry::Point(geometry::Point)> value,
+                              bool fix_x = true, bool fix_y = true);
     void add_traction(unsigned int boundary_id, std::function<geometry::Point(geometry::Point)> traction);
+    /// A traction that depends on the outward unit normal n too: traction(x, n) (a pressure).
+    void add_traction(unsigned int boundary_id, std::function<geometry::Point(geometry::Point, geometry::Point)> traction);
     void add_point_load(geometry::Point at, geometry::Point force);
     void set_body_force(std::function<geometry::Point(geometry::Point)> force);
 
@@ -135,6 +140,16 @@ namespace pumpd::global
 
     /// u_h at x, on the given side of the crack where x lies on it (slow path: one cell search).
     geometry::Point displacement(geometry::Point x, int side = 1) const;
+    /// The mean of the nodal displacements on the faces with this boundary id.
+    geometry::Point mean_displacement(unsigned int boundary_id) const;
+
+    /// The force the supports exert on the body at the nodes of a boundary id (or at a vertex):
+    /// the internal force a(u_h, phi_p e_c) summed over those nodes p, less the point loads
+    /// applied there (tractions on the same boundary are not subtracted) [N/m].
+    geometry::Point reaction(unsigned int boundary_id) const;
+    geometry::Point reaction_at(geometry::Point vertex) const;
+    /// U = 1/2 int sigma(u_h) : eps(u_h) [J/m].
+    double strain_energy() const;
 
     /// Prepares u_h at many points (the PD boundary layer): finds each point's cell once and
     /// builds the sparse interpolation matrix P, so that evaluate_points() is u = P U. side[i]

@@ -95,10 +95,16 @@ namespace pumpd::global
       geometry::Point at, value;
       bool            fix_x, fix_y;
     };
+    struct RegionDirichlet
+    {
+      unsigned int                                    material_id;
+      std::function<geometry::Point(geometry::Point)> value;
+      bool                                            fix_x, fix_y;
+    };
     struct Traction
     {
-      unsigned int                                    id;
-      std::function<geometry::Point(geometry::Point)> value;
+      unsigned int                                                     id;
+      std::function<geometry::Point(geometry::Point, geometry::Point)> value; ///< (x, outward normal)
     };
     struct PointLoad
     {
@@ -126,11 +132,16 @@ namespace pumpd::global
                std::vector<dealii::Tensor<2, 2>> &grad) const;
 
     geometry::Point              displacement(geometry::Point x, int side) const;
+    /// The nodes (indices into `nodes`) carrying the scalar dofs of the faces with this id.
+    std::vector<unsigned int>    boundary_nodes(unsigned int boundary_id) const;
+    /// sum over the nodes of a(u_h, phi_p e_c) less the point loads there.
+    geometry::Point              reaction(const std::vector<unsigned int> &node_set) const;
     void                         prepare_point_evaluation(const std::vector<Point> &points, const std::vector<int> &side);
     std::vector<Point>           evaluate_points() const;
     ErrorNorms                   errors(const SidedField &exact,
                                         const std::function<std::array<double, 4>(geometry::Point, int)> &grad) const;
     std::vector<StressIntensity> stress_intensity_factors(double radius_factor) const;
+    double                       strain_energy() const;
     void                         write_vtu(const std::string &filename) const;
 
     dealii::Triangulation<2>  &tria;
@@ -144,6 +155,7 @@ namespace pumpd::global
 
     std::vector<Dirichlet>                                  dirichlet;
     std::vector<VertexDirichlet>                            vertex_dirichlet;
+    std::vector<RegionDirichlet>                            region_dirichlet;
     std::vector<Traction>                                   tractions;
     std::vector<PointLoad>                                  point_loads;
     std::function<geometry::Point(geometry::Point)>         body_force;

@@ -319,6 +319,24 @@ namespace pumpd::global
         if (!found)
           throw InvalidParameter("Dirichlet boundary id", std::to_string(bc.id), "no boundary face of the mesh has this id");
       }
+    for (const auto &bc : region_dirichlet)
+      {
+        bool found = false;
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          if (cell->material_id() == bc.material_id)
+            {
+              found = true;
+              cell->get_dof_indices(dofs);
+              for (const auto s : dofs)
+                for (const auto &pw : parents[s])
+                  {
+                    const Point u = bc.value(to_point(support[nodes[pw.first]]));
+                    constrain_node(pw.first, u, u, bc.fix_x, bc.fix_y);
+                  }
+            }
+        if (!found)
+          throw InvalidParameter("Dirichlet region (material id)", std::to_string(bc.material_id), "no cell has it");
+      }
     for (const auto &bc : vertex_dirichlet)
       {
         const double tol = 1e-6 * diameter_scale;

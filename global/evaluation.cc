@@ -91,6 +91,28 @@ namespace pumpd::global
     return e;
   }
 
+  // U = 1/2 int sigma(u_h) : eps(u_h) over the body (per unit thickness).
+  double EnrichedElasticity::Impl::strain_energy() const
+  {
+    double                    energy = 0.;
+    const double              lambda = material.lambda(), mu = material.mu();
+    std::vector<int>          side;
+    std::vector<Tensor<1, 2>> u;
+    std::vector<Tensor<2, 2>> grad;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        FEValues<2> fv(mapping, fe, quadrature(cell), field_flags);
+        fv.reinit(cell);
+        side.resize(fv.n_quadrature_points);
+        for (unsigned int q = 0; q < side.size(); ++q)
+          side[q] = crack ? side_at(cell, q, fv.quadrature_point(q)) : 1;
+        field(fv, local_functions(cell), side, u, grad);
+        for (unsigned int q = 0; q < side.size(); ++q)
+          energy += 0.5 * scalar_product(stress_of(grad[q], lambda, mu), 0.5 * (grad[q] + transpose(grad[q]))) * fv.JxW(q);
+      }
+    return energy;
+  }
+
   // Interaction integral, domain form (Moes, Dolbow & Belytschko 1999, Eq. 34), in the tip frame:
   //   I = int_A [sigma_ij du^aux_i/dx_1 + sigma^aux_ij du_i/dx_1 - sigma_ik eps^aux_ik delta_1j] dq/dx_j dA,
   //   K = E' I / 2 with the auxiliary field of unit K_I (for K_I) or unit K_II (for K_II).
@@ -328,7 +350,7 @@ namespace pumpd::global
                 Tensor<1, 2> r = sigma[q] * n;
                 if (traction)
                   {
-                    const auto t = traction->value(to_point(x[q]));
+                    const auto t = traction->value(to_point(x[q]), geometry::Point{n[0], n[1]});
                     r[0] -= t.x;
                     r[1] -= t.y;
                   }

@@ -18,6 +18,7 @@
 #include <fstream>
 #include <iomanip>
 #include <limits>
+#include <map>
 #include <set>
 #include <sstream>
 
@@ -110,19 +111,20 @@ namespace pumpd::global
       return one_line(last);
     }
 
-    /// Runs gmsh on a .geo file; the mesh (msh2) is written to `msh`, its output to `log`.
-    void run_gmsh(const std::string &file, double characteristic_length, const fs::path &msh,
-                  const fs::path &log)
+    /// Runs gmsh on a .geo file with `mode` ("-2": mesh in 2D, msh2; "-0": the unrolled
+    /// geometry) into `out`, its output into `log`.
+    void run_gmsh(const std::string &file, const std::string &mode, double characteristic_length,
+                  const fs::path &out, const fs::path &log)
     {
       const char       *from_env = std::getenv("PUMPD_GMSH");
       const std::string gmsh     = (from_env != nullptr && *from_env != '\0') ? from_env : "gmsh";
 
-      std::vector<std::string> args = {gmsh, "-2", "-format", "msh2"};
+      std::vector<std::string> args = {gmsh, mode};
+      if (mode == "-2")
+        args.insert(args.end(), {"-format", "msh2"});
       if (characteristic_length > 0.)
-        {
-          args.insert(args.end(), {"-setnumber", "h", to_text(characteristic_length, 17)});
-        }
-      args.insert(args.end(), {"-o", msh.string(), file});
+        args.insert(args.end(), {"-setnumber", "h", to_text(characteristic_length, 17)});
+      args.insert(args.end(), {"-o", out.string(), file});
       std::vector<char *> argv;
       for (auto &a : args)
         argv.push_back(a.data());
@@ -163,9 +165,125 @@ namespace pumpd::global
         throw InvalidParameter("Mesh file", file,
                                "gmsh failed with exit status " + std::to_string(exit_status) +
                                  ": " + gmsh_message(log));
-      if (!fs::is_regular_file(msh))
+      if (!fs::is_regular_file(out))
         throw InvalidParameter("Mesh file", file,
-                               "gmsh (exit status 0) wrote no mesh: " + gmsh_message(log));
+                               "gmsh (exit status 0) wrote nothing: " + gmsh_message(log));
+    }
+
+    /// Cells a .geo would be meshed into, before meshing: the area of the bounding box of its
+    /// points over h^2, h the characteristic length (else the smallest one of its points). The
+    /// geometry comes from gmsh's unrolled .geo (gmsh -0: every coordinate evaluated).
+    double estimated_cells(const std::string &file, double characteristic_length, const fs::path &directory)
+    {
+      const fs::path unrolled = directory / "geometry.geo_unrolled";
+      run_gmsh(file, "-0", characteristic_length, unrolled, directory / "gmsh-0.log");
+      std::ifstream in(unrolled);
+      std::string   line;
+      double        x_min = std::numeric_limits<double>::infinity(), x_max = -x_min, y_min = x_min, y_max = -x_min;
+      double        smallest = x_min;
+      std::map<std::string, double> constants;
+      while (std::getline(in, line))
+        {
+          double x, y, z;
+          char   size[64] = {};
+          if (std::sscanf(line.c_str(), "Point(%*d) = {%lf, %lf, %lf, %63[^}]}", &x, &y, &z, size) >= 3)
+            {
+              x_min = std::min(x_min, x), x_max = std::max(x_max, x);
+              y_min = std::min(y_min, y), y_max = std::max(y_max, y);
+              const std::string s(size);
+              const auto        c = constants.find(s);
+              const double      v = c != constants.end() ? c->second : std::atof(size);
+              if (v > 0.)
+                smallest = std::min(smallest, v);
+            }
+          char   name[64] = {};
+          double value    = 0.;
+          if (std::sscanf(line.c_str(), "%63[A-Za-z_0-9] = %lf;", name, &value) == 2)
+            constants[name] = value;
+        }
+      const double h = characteristic_length > 0. ? characteristic_length : smallest;
+      if (!(x_max > x_min) || !(y_max > y_min) || !(h > 0.) || !std::isfinite(h))
+        return 0.;
+      return (x_max - x_min) * (y_max - y_min) / (h * h);
+    }
+
+    /// The named physical groups of a gmsh ASCII mesh ($PhysicalNames; the nodes of point
+    /// elements for named points, msh2 only).
+    MeshNames read_names(const fs::path &msh, const std::string &file)
+    {
+      std::ifstream                                   in(msh);
+      std::string                                     line;
+      std::map<unsigned int, std::string>             point_name;
+      std::map<std::size_t, geometry::Point>          node;
+      std::map<std::string, std::vector<std::size_t>> point_nodes;
+      MeshNames                                       names;
+      double                                          version = 0.;
+      while (std::getline(in, line))
+        if (line == "$MeshFormat")
+          in >> version;
+        else if (line == "$PhysicalNames")
+          {
+            std::size_t n = 0;
+            in >> n;
+            for (std::size_t k = 0; k < n; ++k)
+              {
+                int          dim = 0;
+                unsigned int tag = 0;
+                std::string  quoted;
+                in >> dim >> tag;
+                std::getline(in, quoted);
+                const auto a = quoted.find('"'), b = quoted.rfind('"');
+                const auto name = a != std::string::npos && b > a ? quoted.substr(a + 1, b - a - 1) : quoted;
+                if (dim == 0)
+                  point_name[tag] = name;
+                else if (dim == 1)
+                  names.boundaries[name] = tag;
+                else if (dim == 2)
+                  names.regions[name] = tag;
+              }
+          }
+        else if (line == "$Nodes" && version < 4.)
+          {
+            std::size_t n = 0;
+            in >> n;
+            for (std::size_t k = 0; k < n; ++k)
+              {
+                std::size_t id;
+                double      x, y, z;
+                in >> id >> x >> y >> z;
+                node[id] = {x, y};
+              }
+          }
+        else if (line == "$Elements" && version < 4.)
+          {
+            std::size_t n = 0;
+            in >> n;
+            std::getline(in, line);
+            for (std::size_t k = 0; k < n && std::getline(in, line); ++k)
+              {
+                std::istringstream e(line);
+                std::size_t        id = 0, type = 0, tags = 0, first_node = 0;
+                unsigned int       physical = 0;
+                e >> id >> type >> tags;
+                if (type != 15 || tags == 0)
+                  continue;
+                e >> physical;
+                for (std::size_t t = 1; t < tags; ++t)
+                  e >> id;
+                e >> first_node;
+                if (point_name.count(physical))
+                  point_nodes[point_name[physical]].push_back(first_node);
+              }
+          }
+      for (const auto &[tag, name] : point_name)
+        {
+          if (version >= 4.)
+            throw InvalidParameter("Mesh file", file,
+                                   "the named point \"" + name + "\" needs a gmsh msh2 file (gmsh -format msh2)");
+          for (const auto id : point_nodes[name])
+            names.points[name].push_back(node.at(id));
+        }
+      return names;
     }
 
     /// Reads a gmsh .msh into `tria`; `file` is the name the user gave (for messages).
@@ -205,11 +323,11 @@ namespace pumpd::global
     }
   } // namespace
 
-  void read_mesh(const std::string &file, dealii::Triangulation<2> &tria,
-                 double characteristic_length)
+  MeshNames read_mesh(const std::string &file, dealii::Triangulation<2> &tria, double characteristic_length,
+                      double max_cells)
   {
     if (!std::isfinite(characteristic_length) || characteristic_length < 0.)
-      throw InvalidParameter("Mesh characteristic length", to_text(characteristic_length),
+      throw InvalidParameter("Mesh size", to_text(characteristic_length),
                              "must be a finite number >= 0 (0: the .geo file's default)");
 
     const fs::path path(file);
@@ -221,70 +339,45 @@ namespace pumpd::global
     std::transform(extension.begin(), extension.end(), extension.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
 
+    const auto too_many = [&](double cells, const std::string &how) {
+      if (max_cells > 0. && cells > max_cells)
+        throw InvalidParameter("Mesh size", to_text(characteristic_length),
+                               how + " " + to_text(cells, 3) + " cells, more than Maximum cells = " +
+                                 to_text(max_cells, 3) + ": use a larger Mesh size (cells scale with 1 / size^2)");
+    };
+    MeshNames names;
     if (extension == ".msh")
-      read_msh(path, file, tria);
+      {
+        read_msh(path, file, tria);
+        names = read_names(path, file);
+      }
     else if (extension == ".geo")
       {
         const TemporaryDirectory directory;
-        const fs::path           msh = directory.path() / "mesh.msh";
-        run_gmsh(file, characteristic_length, msh, directory.path() / "gmsh.log");
+        too_many(estimated_cells(file, characteristic_length, directory.path()),
+                 "the mesh would have about (bounding box / size^2)");
+        const fs::path msh = directory.path() / "mesh.msh";
+        run_gmsh(file, "-2", characteristic_length, msh, directory.path() / "gmsh.log");
         read_msh(msh, file, tria);
+        names = read_names(msh, file);
       }
     else
       throw InvalidParameter("Mesh file", file, "must be a gmsh .msh or .geo file");
+    too_many(tria.n_active_cells(), "the mesh has");
+    return names;
   }
 
-  void require_boundary_ids(const dealii::Triangulation<2>                &tria,
-                            const std::vector<dealii::types::boundary_id> &ids)
+  geometry::Body body_of(const dealii::Triangulation<2> &tria)
   {
-    std::set<dealii::types::boundary_id> present;
+    std::vector<geometry::Point> vertices;
+    for (const auto &v : tria.get_vertices())
+      vertices.push_back({v[0], v[1]});
+    std::vector<std::array<std::size_t, 2>> edges;
     for (const auto &cell : tria.active_cell_iterators())
       for (const auto &face : cell->face_iterators())
         if (face->at_boundary())
-          present.insert(face->boundary_id());
-
-    for (const auto id : ids)
-      if (present.count(id) == 0)
-        {
-          std::string list;
-          for (const auto p : present)
-            list += (list.empty() ? "" : ", ") + std::to_string(p);
-          throw InvalidParameter("Mesh boundary id", std::to_string(id),
-                                 "no boundary face of the mesh has it (present: " +
-                                   (list.empty() ? std::string("none") : list) + ")");
-        }
+          edges.push_back({face->vertex_index(0), face->vertex_index(1)});
+    return geometry::body_from_edges(vertices, edges);
   }
 
-  unsigned int find_vertex(const dealii::Triangulation<2> &tria, const geometry::Point &p,
-                           double tolerance)
-  {
-    if (!std::isfinite(tolerance) || tolerance < 0.)
-      throw InvalidParameter("Mesh vertex tolerance", to_text(tolerance),
-                             "must be a finite number >= 0");
-
-    const auto  &vertices = tria.get_vertices();
-    const auto  &used     = tria.get_used_vertices();
-    unsigned int best     = std::numeric_limits<unsigned int>::max();
-    double       best_distance = std::numeric_limits<double>::infinity();
-    for (unsigned int i = 0; i < vertices.size(); ++i)
-      if (used[i])
-        {
-          const double d = std::hypot(vertices[i][0] - p.x, vertices[i][1] - p.y);
-          if (d < best_distance)
-            {
-              best          = i;
-              best_distance = d;
-            }
-        }
-
-    if (best == std::numeric_limits<unsigned int>::max())
-      throw InvalidParameter("Mesh vertex", to_text(p), "the mesh has no vertices");
-    if (!(best_distance <= tolerance))
-      throw InvalidParameter("Mesh vertex", to_text(p),
-                             "no mesh vertex within " + to_text(tolerance) +
-                               " m; the nearest is " +
-                               to_text(geometry::Point{vertices[best][0], vertices[best][1]}) +
-                               " at " + to_text(best_distance) + " m");
-    return best;
-  }
 } // namespace pumpd::global

@@ -113,6 +113,15 @@ namespace pumpd::local
       }
   }
 
+  void RegionDisplacement::set_target(const std::vector<double> &ux, const std::vector<double> &uy)
+  {
+    if (ux.size() != nodes().size() || uy.size() != nodes().size())
+      throw InvalidParameter(region().name + " displacement", std::to_string(ux.size()) + " values",
+                             "one per node of the region (" + std::to_string(nodes().size()) + ")");
+    x1 = ux;
+    y1 = uy;
+  }
+
   void RegionDisplacement::start_from(const State &s)
   {
     const auto &n = nodes();

@@ -51,6 +51,8 @@ namespace pumpd::local
     /// The same displacement for every node of the region (a rigid pad, a support at zero).
     void set_target(geometry::Point displacement);
     void set_target(const std::function<geometry::Point(geometry::Point)> &displacement);
+    /// Per node of the region, in the order of nodes(). Throws InvalidParameter for a wrong size.
+    void set_target(const std::vector<double> &ux, const std::vector<double> &uy);
     /// The ramp starts from the region's displacement in s.
     void start_from(const State &s);
     /// Writes the ramped displacement into the fixed components of the region's nodes.

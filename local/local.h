@@ -1,6 +1,6 @@
-// pumpd_local: bond-based peridynamics in a box, no deal.II (DESIGN.md, local/).
+// pumpd_local: bond-based peridynamics in a box, no deal.II (DESIGN.md, local/). Built on
+// pumpd_basics (basics.h: geometry, the body, errors, Williams fields).
 //
-//   geometry.h        points, boxes, circles, polylines, the body (outline minus holes)
 //   material.h        Lipton's softening bond potential: C, beta, S_c from E, G_c, nu, J
 //   lattice.h         the node lattice with ghost padding, the half stencil and its weights
 //   model.h           PdModel: nodes, bonds (holes, pre-cracks), boundary layer, force kernel,
@@ -13,18 +13,14 @@
 //   hdf5_array.h      one-dimensional HDF5 datasets (the checkpoints' arrays; not included here:
 //                     it needs the HDF5 headers)
 //   vtu_output.h      VTU / PVD for ParaView
-//   lefm.h            Williams near-tip fields (reference and driving data)
-//   error.h           InvalidParameter (names the parameter and its range), NonFiniteState
 #pragma once
 
+#include "basics.h"
 #include "boundary_layer.h"
 #include "checkpoint.h"
-#include "error.h"
 #include "explicit_run.h"
-#include "geometry.h"
 #include "integrators.h"
 #include "lattice.h"
-#include "lefm.h"
 #include "material.h"
 #include "model.h"
 #include "vtu_output.h"

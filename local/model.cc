@@ -3,9 +3,13 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <fstream>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <utility>
+
+#include <unistd.h>
 
 #include "error.h"
 #include "fast_exp.h"
@@ -23,7 +27,7 @@ namespace pumpd::local
 
     void validate(const Region &r)
     {
-      const geometry::Box &o = r.body.outline;
+      const geometry::Box &o = r.body.bounding_box();
       if (!(o.width() > 0. && o.height() > 0.))
         throw InvalidParameter("Body outline", box_text(o), "must have positive width and height");
       if (!o.contains(r.box, 1e-9 * std::max(o.width(), o.height())))
@@ -42,11 +46,49 @@ namespace pumpd::local
         }
     }
 
-    /// Box edges inside the body (not on its outline): 0 left, 1 right, 2 bottom, 3 top.
+    /// Box edges inside the body's bounding box: 0 left, 1 right, 2 bottom, 3 top.
     std::array<bool, 4> interior_edges(const geometry::Box &box, const geometry::Box &outline, double tol)
     {
       return {box.x_min > outline.x_min + tol, box.x_max < outline.x_max - tol,
               box.y_min > outline.y_min + tol, box.y_max < outline.y_max - tol};
+    }
+
+    /// The body with only the holes near the box (within `reach`): the only ones a bond of the
+    /// box can pass through.
+    geometry::Body near_box(const geometry::Body &body, const geometry::Box &box, double reach)
+    {
+      const auto near = [&](const geometry::Piece &p) {
+        const geometry::Box b = p.bounding_box();
+        return b.x_max >= box.x_min - reach && b.x_min <= box.x_max + reach && b.y_max >= box.y_min - reach &&
+               b.y_min <= box.y_max + reach;
+      };
+      std::vector<geometry::Loop> holes;
+      for (const auto &hole : body.holes())
+        if (std::any_of(hole.pieces.begin(), hole.pieces.end(), near))
+          holes.push_back(hole);
+      return {body.outline(), holes};
+    }
+
+    /// Memory this machine can give a new allocation [bytes]: MemAvailable of /proc/meminfo, else
+    /// the free physical pages.
+    double available_memory()
+    {
+      std::ifstream in("/proc/meminfo");
+      std::string   key, unit;
+      double        kb = 0.;
+      while (in >> key >> kb >> unit)
+        if (key == "MemAvailable:")
+          return 1024. * kb;
+      return double(sysconf(_SC_AVPHYS_PAGES)) * double(sysconf(_SC_PAGESIZE));
+    }
+
+    /// What a model and a run on it hold [bytes]: per stored node 24 doubles (state, masks, the
+    /// integrators' and the cycle's copies), per bond of the half stencil 5 bits (existence,
+    /// initial cracks, no-fail zones, broken in two states).
+    double estimated_bytes(const Lattice &grid, const Stencil &st)
+    {
+      const double n = double(grid.storage_size());
+      return n * 24. * 8. + 5. * double(st.size()) * n / 8.;
     }
 
     /// h = delta / m, with m checked first so that m <= 0 is reported as m, not as h.
@@ -83,12 +125,54 @@ namespace pumpd::local
     return r;
   }
 
+  PrescribedRegion PrescribedRegion::band(std::string name, std::vector<std::array<geometry::Point, 2>> edges,
+                                          double width, bool fix_x, bool fix_y)
+  {
+    PrescribedRegion r;
+    r.name   = std::move(name);
+    r.radius = width;
+    r.area   = {std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+                -std::numeric_limits<double>::infinity(), -std::numeric_limits<double>::infinity()};
+    for (const auto &e : edges)
+      for (const auto &x : e)
+        r.area = {std::min(r.area.x_min, x.x - width), std::min(r.area.y_min, x.y - width),
+                  std::max(r.area.x_max, x.x + width), std::max(r.area.y_max, x.y + width)};
+    r.centre = {0.5 * (r.area.x_min + r.area.x_max), 0.5 * (r.area.y_min + r.area.y_max)};
+    r.edges  = std::move(edges);
+    r.fix_x  = fix_x;
+    r.fix_y  = fix_y;
+    return r;
+  }
+
+  PrescribedRegion PrescribedRegion::shape(std::string name, const geometry::Box &area,
+                                           std::function<bool(geometry::Point)> inside, bool fix_x, bool fix_y)
+  {
+    PrescribedRegion r = box(std::move(name), area, fix_x, fix_y);
+    r.inside           = std::move(inside);
+    return r;
+  }
+
   bool PrescribedRegion::contains(geometry::Point p, double g) const
   {
     const geometry::Box grown{area.x_min - g, area.y_min - g, area.x_max + g, area.y_max + g};
     if (!grown.contains(p))
       return false;
+    if (!edges.empty())
+      return std::any_of(edges.begin(), edges.end(),
+                         [&](const auto &e) { return geometry::distance_to_segment(p, e[0], e[1]) <= radius + g; });
+    if (inside)
+      return g > 0. || inside(p);
     return radius <= 0. || geometry::norm(p - centre) <= radius + g;
+  }
+
+  std::string PrescribedRegion::description() const
+  {
+    if (!edges.empty())
+      return "band of width " + std::to_string(radius) + " m along " + std::to_string(edges.size()) + " edges";
+    if (radius > 0.)
+      return "disk of radius " + std::to_string(radius) + " m at (" + std::to_string(centre.x) + ", " +
+             std::to_string(centre.y) + ")";
+    return (inside ? "region in the box " : "box ") + box_text(area);
   }
 
   PdModel::PdModel(const MaterialParameters &material, double horizon, int horizon_ratio,
@@ -102,6 +186,19 @@ namespace pumpd::local
     validate(reg);
     const double h = grid.spacing();
     volume         = h * h;
+    // Refuse a lattice this machine cannot hold before allocating it; memory grows like m^4 at a
+    // fixed horizon (nodes and bonds per node each like m^2).
+    const double bytes = estimated_bytes(grid, st), available = 0.8 * available_memory();
+    if (bytes > available)
+      {
+        const int m_max = int(std::floor(horizon_ratio * std::pow(available / bytes, 0.25)));
+        std::ostringstream why;
+        why << "the PD lattice of " << grid.nx() * grid.ny() << " nodes (spacing " << h << " m) with " << 2 * st.size()
+            << " bonds each needs about " << bytes / 1073741824. << " GiB, more than the " << available / 1073741824.
+            << " GiB this machine can give it: use m <= " << std::max(2, m_max)
+            << " for this box and horizon, or a larger horizon or a smaller box";
+        throw InvalidParameter("Horizon over spacing", std::to_string(horizon_ratio), why.str());
+      }
 
     stiffness = 0.;
     for (std::size_t k = 0; k < st.size(); ++k)
@@ -126,16 +223,21 @@ namespace pumpd::local
           active_nodes.push_back(i);
         }
 
-    // Boundary layer: nodes closer than one horizon to a box edge inside the body.
+    // Boundary layer: nodes closer than one horizon to a box edge inside the body, where the
+    // body goes on across the edge (the outline holds the node's foot on the edge; a box edge
+    // across a re-entrant cut-out has free surface, not more material, beyond it).
     const auto &box  = reg.box;
-    const auto  edge = interior_edges(box, reg.body.outline, 0.25 * h);
+    const auto  edge = interior_edges(box, reg.body.bounding_box(), 0.25 * h);
+    const auto  beyond = [&](geometry::Point foot) {
+      return reg.body.outline().encloses(foot) || reg.body.outline().distance(foot) <= 1e-9 * h;
+    };
     for (std::size_t i : active_nodes)
       {
         const auto p        = grid.position(i);
-        const bool in_layer = (edge[0] && p.x - box.x_min < horizon) ||
-                              (edge[1] && box.x_max - p.x < horizon) ||
-                              (edge[2] && p.y - box.y_min < horizon) ||
-                              (edge[3] && box.y_max - p.y < horizon);
+        const bool in_layer = (edge[0] && p.x - box.x_min < horizon && beyond({box.x_min, p.y})) ||
+                              (edge[1] && box.x_max - p.x < horizon && beyond({box.x_max, p.y})) ||
+                              (edge[2] && p.y - box.y_min < horizon && beyond({p.x, box.y_min})) ||
+                              (edge[3] && box.y_max - p.y < horizon && beyond({p.x, box.y_max}));
         if (in_layer)
           layer_nodes.push_back(i);
         else
@@ -167,9 +269,7 @@ namespace pumpd::local
             }
         if (in.empty())
           throw InvalidParameter(name,
-                                 r.radius > 0. ? "disk of radius " + std::to_string(r.radius) + " m at (" +
-                                                   std::to_string(r.centre.x) + ", " + std::to_string(r.centre.y) + ")"
-                                               : "box " + box_text(r.area),
+                                 r.description(),
                                  "holds no PD node (spacing " + std::to_string(h) +
                                    " m): make it larger or move it onto the body");
         region_nodes.push_back(std::move(in));
@@ -178,7 +278,9 @@ namespace pumpd::local
       if (free_x[i] == 0. || free_y[i] == 0.)
         constrained.push_back(i);
 
-    // Bonds: exist between material nodes unless the segment passes through a hole.
+    // Bonds: exist between material nodes unless the segment leaves the body (through a hole or
+    // across a re-entrant part of the outline).
+    const geometry::Body boundary = near_box(reg.body, box, 2. * horizon);
     for (std::size_t k = 0; k < st.size(); ++k)
       {
         const std::ptrdiff_t off = st.dx[k] + std::ptrdiff_t(grid.stride()) * st.dy[k];
@@ -188,8 +290,7 @@ namespace pumpd::local
             if (!material_at[j])
               continue;
             const auto a = grid.position(i), b = grid.position(j);
-            if (std::any_of(reg.body.holes.begin(), reg.body.holes.end(),
-                            [&](const geometry::Circle &c) { return geometry::segment_meets_disk(a, b, c); }))
+            if (boundary.crosses_boundary(a, b))
               continue;
             const std::size_t w = k * plane_words + i / 64;
             exists[w] |= std::uint64_t(1) << (i % 64);

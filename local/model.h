@@ -1,7 +1,8 @@
 // The PD body in a box: lattice, bonds, the force kernel and the derived fields.
 //
 // A node exists where the lattice meets the body (outside holes); a bond exists where its segment
-// stays clear of every hole; a bond across a pre-existing crack polyline starts broken. Nodes
+// stays in the body (clear of holes and re-entrant corners); a bond across a pre-existing crack
+// polyline starts broken. Nodes
 // within one horizon of a box edge that lies inside the body form the boundary layer and take
 // prescribed displacements (BoundaryLayer); edges on the body outline are free surfaces.
 // Besides the layer, prescribed regions (PrescribedRegion: supports, loading pads) fix one or both
@@ -11,11 +12,13 @@
 // Units: force densities f [N/m^3], energy densities [J/m^3], energies per unit thickness [J/m].
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
-#include "geometry.h"
+#include "body.h"
 #include "lattice.h"
 #include "material.h"
 
@@ -31,16 +34,19 @@ namespace pumpd::local
 
   /// A set of nodes with prescribed displacement components, besides the boundary layer: the
   /// material nodes inside `area` and, for a disk, within `radius` of `centre` (area is then the
-  /// disk's bounding box). fix_x / fix_y say which components are prescribed: a pin fixes both, a
-  /// roller on a horizontal edge only uy. The values come from RegionDisplacement (boundary_layer.h)
-  /// or stay where the state has them.
+  /// disk's bounding box); for a band, within `radius` of its `edges` (a named boundary of the
+  /// body); for a shape, where `inside` holds (a named region of the body's mesh). fix_x / fix_y
+  /// say which components are prescribed: a pin fixes both, a roller on a horizontal edge only uy.
+  /// The values come from RegionDisplacement (boundary_layer.h) or stay where the state has them.
   struct PrescribedRegion
   {
-    std::string     name;         ///< for messages ("Pin support", ...)
-    geometry::Box   area;
-    geometry::Point centre;
-    double          radius = 0.;  ///< > 0: a disk; 0: the box `area`
-    bool            fix_x = true, fix_y = true;
+    std::string                                  name; ///< for messages ("Pin support", ...)
+    geometry::Box                                area;
+    geometry::Point                              centre;
+    double                                       radius = 0.; ///< disk or band; 0 with no edges: the box `area`
+    std::vector<std::array<geometry::Point, 2>>  edges;
+    std::function<bool(geometry::Point)>         inside;
+    bool                                         fix_x = true, fix_y = true;
     /// >= 0: a no-fail zone. Bonds with an end within this distance [m] of the region (the disk's
     /// radius, or the box, grown by it) stay linear elastic: force a S instead of a S exp(-beta
     /// |xi| S^2), never fail, count as intact for damage. A support or load pad concentrates
@@ -49,7 +55,14 @@ namespace pumpd::local
 
     static PrescribedRegion disk(std::string name, geometry::Point centre, double radius, bool fix_x, bool fix_y);
     static PrescribedRegion box(std::string name, const geometry::Box &area, bool fix_x, bool fix_y);
-    bool                    contains(geometry::Point p, double grown_by = 0.) const;
+    static PrescribedRegion band(std::string name, std::vector<std::array<geometry::Point, 2>> edges, double width,
+                                 bool fix_x, bool fix_y);
+    static PrescribedRegion shape(std::string name, const geometry::Box &area,
+                                  std::function<bool(geometry::Point)> inside, bool fix_x, bool fix_y);
+    /// Grown: the region's nodes and those within grown_by of it (of its box, for a shape).
+    bool contains(geometry::Point p, double grown_by = 0.) const;
+    /// What the region is, for messages.
+    std::string description() const;
   };
 
   /// Everything that changes in a run. Arrays use the lattice's storage index.

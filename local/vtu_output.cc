@@ -61,22 +61,10 @@ namespace pumpd::local
       throw std::runtime_error("error while writing " + path);
   }
 
-  PvdSeries::PvdSeries(std::string dir, std::string base)
-    : directory(std::move(dir))
-    , name(std::move(base))
+  void write_vtu(PvdSeries &series, const PdModel &model, const State &s)
   {
-    std::filesystem::create_directories(directory);
-  }
-
-  void PvdSeries::add(const PdModel &model, const State &s)
-  {
-    const std::string file = name + "_" + std::to_string(entries.size()) + ".vtu";
-    write_vtu(directory + "/" + file, model, s);
-    entries.emplace_back(s.time, file);
-    std::ofstream pvd(directory + "/" + name + ".pvd");
-    pvd << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
-    for (const auto &[t, f] : entries)
-      pvd << "<DataSet timestep=\"" << t << "\" group=\"\" part=\"0\" file=\"" << f << "\"/>\n";
-    pvd << "</Collection>\n</VTKFile>\n";
+    const std::string file = series.next_file();
+    write_vtu(series.path_of(file), model, s);
+    series.add(s.time, file);
   }
 } // namespace pumpd::local

@@ -1,5 +1,5 @@
 // ParaView output of the PD state: one VTU per snapshot (nodes as vertices with displacement,
-// damage, stretch ratio Z, energy density) and a PVD file that lists the series with times.
+// damage, stretch ratio Z, energy density), listed with its time in a PVD series (basics/pvd.h).
 #pragma once
 
 #include <string>
@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "model.h"
+#include "pvd.h"
 
 namespace pumpd::local
 {
@@ -14,15 +15,6 @@ namespace pumpd::local
   /// file cannot be written.
   void write_vtu(const std::string &path, const PdModel &model, const State &s);
 
-  /// A growing time series: add() writes the VTU and rewrites the PVD that indexes it.
-  class PvdSeries
-  {
-  public:
-    PvdSeries(std::string directory, std::string name);
-    void add(const PdModel &model, const State &s);
-
-  private:
-    std::string                                directory, name;
-    std::vector<std::pair<double, std::string>> entries;
-  };
+  /// The next VTU of a series (basics/pvd.h), indexed at the state's time.
+  void write_vtu(PvdSeries &series, const PdModel &model, const State &s);
 } // namespace pumpd::local

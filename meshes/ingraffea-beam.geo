@@ -15,10 +15,10 @@
 //   h                  quad edge length away from the crack band, m (default 0.008)
 //   crack_zone_factor  cell size in the crack band relative to h (default 0.5; 1 = uniform)
 //
-// Physical groups (deal.II reads the tags as material / boundary ids):
-//   Surface 1: the beam
-//   Curve 1: bottom edge (y = 0)      Curve 2: right edge (x = 0.508)
-//   Curve 3: top edge (y = 0.2032)    Curve 4: left edge (x = 0)
+// Physical groups, named for the scene files (prm/ingraffea-*.prm refer to them by name):
+//   Surface "beam"
+//   Curves "bottom" (y = 0), "right" (x = 0.508), "top" (y = 0.2032), "left" (x = 0)
+//   Points "pin" (0.0254, 0), "roller" (0.4826, 0), "load" (0.254, 0.2032)
 //
 // Example: gmsh -2 -setnumber h 0.004 -format msh2 ingraffea-beam.geo -o beam.msh
 
@@ -68,12 +68,14 @@ Field[1].YMax = 1;
 Field[1].Thickness = 0.0254;
 Background Field = 1;
 
-// Unnamed on purpose: deal.II's gmsh-API reader would parse a name as "BoundaryID: ...".
-Physical Surface(1) = {1};  // the beam
-Physical Curve(1) = {1, 2, 3};  // bottom
-Physical Curve(2) = {4};  // right
-Physical Curve(3) = {5, 6};  // top
-Physical Curve(4) = {7};  // left
+Physical Surface("beam", 1) = {1};
+Physical Curve("bottom", 1) = {1, 2, 3};
+Physical Curve("right", 2) = {4};
+Physical Curve("top", 3) = {5, 6};
+Physical Curve("left", 4) = {7};
+Physical Point("pin", 11) = {2};
+Physical Point("roller", 12) = {3};
+Physical Point("load", 13) = {6};
 
 Mesh.ElementOrder = 1;
 Mesh.Algorithm = 6;               // Frontal-Delaunay (8, Frontal-Delaunay for quads, crashes in 4.8.4)

@@ -37,7 +37,7 @@ namespace
     const double side = nodes_side * (horizon / m);
     Region       region;
     region.box          = {0., 0., side, side};
-    region.body.outline = {-side, -side, 2. * side, 2. * side};
+    region.body  = pumpd::geometry::Body(pumpd::geometry::Box{-side, -side, 2. * side, 2. * side});
     return PdModel(MaterialParameters{}, horizon, m, region);
   }
 

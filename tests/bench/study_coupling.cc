@@ -11,7 +11,7 @@
 // `pumpd-metric coupling.<name>` lines it prints itself carry no case name, so they are shown as
 // `  [run] coupling.<name>` here and only the case-named metrics below are pumpd-metric lines.
 //
-// 1. Cases I and II against the published PUM-PD paths (the prm's Published path; run_global_local
+// 1. Cases I and II against the published PUM-PD paths (the prm's Reference path; run_global_local
 //    takes our path up to its point nearest the published tip, symmetric mean and Hausdorff
 //    distance): coupling.caseN.mean_dev_mm, coupling.caseN.hausdorff_mm. Case III (no published
 //    path): coupling.case3.tip_x_mm, tip_y_mm (the last vertex of the path), length_mm (the whole
@@ -78,7 +78,6 @@ using geometry::Polyline;
 namespace
 {
   const double      not_a_number = std::numeric_limits<double>::quiet_NaN();
-  const std::string source_dir   = PUMPD_SOURCE_DIR;
   const std::string output_root  = PUMPD_BINARY_DIR "/study_coupling_output";
   const double      prm_horizon  = 0.004; ///< the horizon of prm/ingraffea-case*.prm (checked)
   const double      budget_delta_2 = 900.; ///< [s] the delta = 0.002, m = 8 run at most (else m = 4)
@@ -126,52 +125,53 @@ namespace
     EXPECT_TRUE(std::isfinite(value)) << name << " = " << value;
   }
 
-  coupling::GlobalLocalParameters from_prm(const std::string &scene)
+  coupling::Parameters from_prm(const std::string &scene)
   {
-    dealii::ParameterHandler prm;
-    coupling::declare_parameters(prm);
-    prm.parse_input(source_dir + "/prm/" + scene);
-    return coupling::read_global_local(prm);
+    return coupling::read_parameters("prm/" + scene);
   }
 
   /// The PD discretisation changed to (delta, m): the lengths of the box and of the exchange
   /// controller scaled with delta / 0.004 (header comment), Minimum advance at least 2 h.
-  coupling::GlobalLocalParameters with_pd(coupling::GlobalLocalParameters p, double delta, int m)
+  coupling::Parameters with_pd(coupling::Parameters p, double delta, int m)
   {
-    const double s = delta / p.horizon;
-    p.horizon       = delta;
-    p.horizon_ratio = m;
-    p.box.size *= s;
-    p.box.margin *= s;
-    p.box.max_size *= s;
-    p.exchange.max_advance *= s;
-    p.exchange.near_distance *= s;
-    p.exchange.min_advance = std::max(s * p.exchange.min_advance, 2. * delta / m);
+    const double s            = delta / p.pd.horizon;
+    auto        &c            = p.cycle;
+    p.pd.horizon              = delta;
+    p.pd.horizon_over_spacing = m;
+    c.box.size *= s;
+    c.box.margin *= s;
+    c.box.max_size *= s;
+    c.exchange.max_advance *= s;
+    c.exchange.near_distance *= s;
+    c.exchange.min_advance = std::max(s * c.exchange.min_advance, 2. * delta / m);
     return p;
   }
 
   struct CycleRun
   {
     std::string                                name;
-    coupling::GlobalLocalParameters            p;
+    coupling::Parameters                       p;
     std::optional<coupling::GlobalLocalResult> r; ///< empty if the run threw
   };
 
-  CycleRun run(const std::string &name, coupling::GlobalLocalParameters p)
+  Polyline initial_crack(const coupling::Parameters &p) { return coupling::build_scene(p.scene).crack(); }
+
+  CycleRun run(const std::string &name, coupling::Parameters p)
   {
-    p.output_directory = output_root + "/" + name;
-    std::filesystem::remove_all(p.output_directory); // no stale checkpoint, no stale series
-    std::cout << "\n=== " << name << ": delta " << p.horizon << " m, m = " << p.horizon_ratio << " (h "
-              << p.horizon / p.horizon_ratio << " m), box " << p.box.size << " m (margin " << p.box.margin
-              << ", max " << p.box.max_size << "), advance " << p.exchange.min_advance << " ... "
-              << p.exchange.max_advance << " m (near " << p.exchange.near_distance << " m), max exchanges "
-              << p.max_exchanges << ", output " << p.output_directory << std::endl;
+    p.scene.output_directory = output_root + "/" + name;
+    std::filesystem::remove_all(p.scene.output_directory); // no stale checkpoint, no stale series
+    const auto &c = p.cycle;
+    std::cout << "\n=== " << name << ": delta " << p.pd.horizon << " m, m = " << p.pd.horizon_over_spacing << " (h "
+              << p.pd.spacing() << " m), box " << c.box.size << " m (margin " << c.box.margin << ", max "
+              << c.box.max_size << "), advance " << c.exchange.min_advance << " ... " << c.exchange.max_advance
+              << " m (near " << c.exchange.near_distance << " m), max exchanges " << c.max_exchanges << ", output "
+              << p.scene.output_directory << std::endl;
     CycleRun result{name, p, std::nullopt};
     RunOutput    buffer;
     std::ostream progress(&buffer);
     try
       {
-        result.r = coupling::run_global_local(p, progress);
+        result.r = coupling::run_global_local(coupling::build_scene(p.scene), p.global_local_settings(), progress);
       }
     catch (const std::exception &e)
       {
@@ -182,7 +182,7 @@ namespace
       }
     progress.flush();
     const auto  &r     = *result.r;
-    const double grown = geometry::length(r.path) - geometry::length(p.initial_crack);
+    const double grown = geometry::length(r.path) - geometry::length(initial_crack(p));
     std::cout << "=== " << name << ": " << r.exchanges.size() << " exchanges, crack " << geometry::length(r.path)
               << " m (grown " << grown << " m), tip (" << r.path.back().x << ", " << r.path.back().y
               << "), stop reason: " << r.stop_reason << "; " << r.seconds << " s" << std::endl;
@@ -191,13 +191,13 @@ namespace
 
   double grown(const CycleRun &run)
   {
-    return run.r ? geometry::length(run.r->path) - geometry::length(run.p.initial_crack) : not_a_number;
+    return run.r ? geometry::length(run.r->path) - geometry::length(initial_crack(run.p)) : not_a_number;
   }
 
   /// The path from its vertex nearest the initial tip on (the grown part, that vertex included).
   Polyline grown_part(const CycleRun &run)
   {
-    const Point   tip  = run.p.initial_crack.back();
+    const Point   tip  = initial_crack(run.p).back();
     const auto   &path = run.r->path;
     std::size_t   k    = 0;
     for (std::size_t i = 1; i < path.size(); ++i)
@@ -249,7 +249,7 @@ namespace
             s[2] += e.seconds_pd;
             s[3] += e.seconds_extraction;
           }
-        area       = run.r->mean_box_area / run.p.reference_box_area;
+        area       = run.r->mean_box_area / run.p.cycle.reference_box_area;
         node_steps = run.r->pd_node_steps;
         total      = run.r->seconds;
       }
@@ -276,7 +276,7 @@ namespace
         s[3] += e.seconds_extraction;
       }
     std::cout << "  " << run.name << ": " << run.r->exchanges.size() << " exchanges, box area ratio "
-              << run.r->mean_box_area / run.p.reference_box_area << ", PD node-steps " << run.r->pd_node_steps
+              << run.r->mean_box_area / run.p.cycle.reference_box_area << ", PD node-steps " << run.r->pd_node_steps
               << ", seconds global " << s[0] << ", point evaluation " << s[1] << ", PD " << s[2] << ", extraction "
               << s[3] << ", total " << run.r->seconds << std::endl;
   }
@@ -296,7 +296,7 @@ namespace
     if (it == runs().end())
       {
         auto p = from_prm("ingraffea-case" + std::to_string(n) + ".prm");
-        EXPECT_DOUBLE_EQ(p.horizon, prm_horizon) << "the scaling of the convergence study assumes it";
+        EXPECT_DOUBLE_EQ(p.pd.horizon, prm_horizon) << "the scaling of the convergence study assumes it";
         it = runs().emplace(name, run(name, p)).first;
       }
     return it->second;
@@ -307,13 +307,13 @@ namespace
     const CycleRun    &c      = case_run(n);
     const std::string  prefix = "coupling.case" + std::to_string(n);
     sanity(c);
-    const bool compared = c.r && c.r->published_mean >= 0.;
+    const bool compared = c.r && c.r->reference_mean >= 0.;
     if (c.r)
       {
         EXPECT_TRUE(compared) << "no published path in the prm";
       }
-    metric(prefix + ".mean_dev_mm", compared ? 1e3 * c.r->published_mean : not_a_number);
-    metric(prefix + ".hausdorff_mm", compared ? 1e3 * c.r->published_hausdorff : not_a_number);
+    metric(prefix + ".mean_dev_mm", compared ? 1e3 * c.r->reference_mean : not_a_number);
+    metric(prefix + ".hausdorff_mm", compared ? 1e3 * c.r->reference_hausdorff : not_a_number);
     work_metrics(prefix, c);
   }
 
@@ -362,8 +362,8 @@ TEST(CouplingStudy, PathConvergenceCaseII)
   // Under the horizon: one exchange of delta = 0.002, m = 8 first.
   int m = 8;
   {
-    auto probe_p          = with_pd(prm, 0.002, 8);
-    probe_p.max_exchanges = 1;
+    auto probe_p                = with_pd(prm, 0.002, 8);
+    probe_p.cycle.max_exchanges = 1;
     const CycleRun probe  = run("case2_delta2_m8_probe", probe_p);
     if (probe.r && m8.r && !probe.r->exchanges.empty() && !m8.r->exchanges.empty())
       {

@@ -70,8 +70,8 @@ TEST(BoxPolicy, ReachesOutToTheOutlineAndStaysInsideTheBody)
   // Near the top edge, growing upwards: the box would stick out; it is shifted in and its top
   // edge lies on the outline (a free surface, no boundary layer there).
   const Box b = policy.place({0.2, 0.19}, {0., 1.});
-  EXPECT_DOUBLE_EQ(b.y_max, beam.outline.y_max);
-  EXPECT_TRUE(beam.outline.contains(b, 1e-12));
+  EXPECT_DOUBLE_EQ(b.y_max, beam.bounding_box().y_max);
+  EXPECT_TRUE(beam.bounding_box().contains(b, 1e-12));
   // Near the bottom edge at the mouth: the rear edge reaches the bottom (closer than two
   // horizons would leave a sliver).
   const Box c = policy.place({0.3, 0.006}, {0., 1.});
@@ -83,7 +83,8 @@ TEST(BoxPolicy, GrowsToTakeInAHoleWithinReach)
   coupling::BoxPolicy policy(beam, settings());
   // Tip 17 mm below the hole's centre: the plain box's front edge would cut the hole.
   const Box b = policy.place({0.1524, 0.1036}, {0., 1.});
-  const auto &h = beam.holes[0];
+  geometry::Circle h;
+  ASSERT_TRUE(beam.holes()[0].circle(h));
   EXPECT_LE(b.y_min, h.centre.y - h.radius - 2. * 0.004);
   EXPECT_GE(b.y_max, h.centre.y + h.radius + 2. * 0.004 - 1e-12);
   EXPECT_LE(b.height(), 0.064 + 1e-12);

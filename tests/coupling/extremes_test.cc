@@ -16,40 +16,29 @@
 #include <sstream>
 #include <string>
 
-#include "beam_scene.h"
 #include "global_local.h"
 #include "lefm_growth.h"
 #include "mesh.h"
 #include "metric.h"
 #include "pd_edge_crack.h"
+#include "scene_file.h"
 
 using namespace pumpd;
 using namespace pumpd::coupling;
 
 namespace
 {
-  const std::string source = PUMPD_SOURCE_DIR;
-  constexpr double  h      = 0.001; // PD spacing of the coarse runs
+  constexpr double h = 0.001; // PD spacing of the coarse runs
 
-  GlobalLocalParameters coarse(const std::string &output, bool holes = true)
+  /// The coarse Case II scene of the regression tests at m = 4; output in pumpd_extremes_test_<name>.
+  coupling::Parameters coarse(const std::string &name, bool holes = true)
   {
-    GlobalLocalParameters p;
-    p.mesh_file     = source + (holes ? "/meshes/ingraffea-beam-holes.geo" : "/meshes/ingraffea-beam.geo");
-    p.mesh_size     = 0.016;
-    p.initial_crack = {{0.1016, 0.}, {0.1016, 0.0254}};
-    p.material.youngs_modulus  = 2.4e9;
-    p.material.fracture_energy = 500.;
-    p.horizon                  = 0.004;
-    p.horizon_ratio            = 4;
-    p.output_directory         = output;
+    auto p = test::scene_file("tests/regression/ingraffea-case2-coarse.prm", name.empty() ? "" : "extremes_test_" + name);
+    p.pd.horizon_over_spacing = 4;
+    p.scene.reference_path    = "";
+    if (!holes)
+      p.scene.mesh_file = "meshes/ingraffea-beam.geo";
     return p;
-  }
-
-  std::string output_directory(const std::string &name)
-  {
-    const auto dir = std::filesystem::temp_directory_path() / ("pumpd_extremes_test_" + name);
-    std::filesystem::remove_all(dir);
-    return dir.string();
   }
 
   bool contains(const std::string &text, const std::string &part) { return text.find(part) != std::string::npos; }
@@ -77,13 +66,13 @@ namespace
       EXPECT_TRUE(std::isfinite(x.x) && std::isfinite(x.y));
   }
 
-  GlobalLocalResult run(const GlobalLocalParameters &p, std::string *log_out = nullptr)
+  GlobalLocalResult run(const coupling::Parameters &p, std::string *log_out = nullptr)
   {
     std::ostringstream log;
     GlobalLocalResult  r;
     try
       {
-        r = run_global_local(p, log);
+        r = run_global_local(build_scene(p.scene), p.global_local_settings(), log);
       }
     catch (...)
       {
@@ -123,13 +112,13 @@ namespace
 // scene.enriched_dof_fraction and scene.pd_nodes_over_fullpd_nodes lie in (0, 0.25).
 namespace
 {
-  GlobalLocalParameters scaled(double E, std::size_t exchanges)
+  coupling::Parameters scaled(double E, std::size_t exchanges)
   {
-    auto p                     = coarse("");
-    p.max_exchanges            = exchanges;
-    p.material.youngs_modulus  = E;
-    p.material.fracture_energy = 500. * E / 2.4e9;
-    p.reference_load           = 1e5 * E / 2.4e9;
+    auto p                           = coarse("");
+    p.cycle.max_exchanges            = exchanges;
+    p.scene.material.youngs_modulus  = E;
+    p.scene.material.fracture_energy = 500. * E / 2.4e9;
+    p.global.reference_load_factor   = 1e5 * E / 2.4e9;
     return p;
   }
 
@@ -155,7 +144,7 @@ TEST(CouplingExtremes, ScaleInvarianceOfTheCycle)
         {
           const auto &a = r.exchanges[n], &b = ref.exchanges[n];
           EXPECT_EQ(a.k1 / E, b.k1 / 2.4e9) << "exchange " << n;
-          EXPECT_EQ(a.critical_load / E, b.critical_load / 2.4e9) << "exchange " << n;
+          EXPECT_EQ(a.critical_load_factor / E, b.critical_load_factor / 2.4e9) << "exchange " << n;
           EXPECT_EQ(a.load_factor, b.load_factor) << "exchange " << n;
           EXPECT_EQ(a.tip.x, b.tip.x) << "exchange " << n;
           EXPECT_EQ(a.tip.y, b.tip.y) << "exchange " << n;
@@ -169,16 +158,13 @@ TEST(CouplingExtremes, ScaleInvarianceOfTheCycle)
   std::vector<LefmGrowthResult> lefm;
   for (double E : {2.4e9, 1e3, 1e12})
     {
-      LefmGrowthParameters p;
-      p.mesh_file      = source + "/meshes/ingraffea-beam-holes.geo";
-      p.mesh_size      = 0.016;
-      p.initial_crack  = {{0.1016, 0.}, {0.1016, 0.0254}};
-      p.youngs_modulus = E;
-      p.poisson_ratio  = 0.25;
-      p.load           = 1e5 * E / 2.4e9;
-      p.max_steps      = 8;
+      auto p = test::scene_file("tests/regression/ingraffea-case2-lefm-coarse.prm", "");
+      p.scene.material.youngs_modulus = E;
+      p.scene.material.poisson_ratio  = 0.25;
+      p.global.reference_load_factor  = 1e5 * E / 2.4e9;
+      p.lefm.max_steps                = 8;
       std::ostringstream log;
-      lefm.push_back(run_lefm_growth(p, log));
+      lefm.push_back(run_lefm_growth(build_scene(p.scene), p.lefm_growth_settings(), log));
     }
   double lefm_path = 0., lefm_k = 0.;
   for (std::size_t j = 1; j < lefm.size(); ++j)
@@ -247,12 +233,13 @@ TEST(CouplingExtremes, HorizonRatioTwoAndSixteen)
   for (int m : {2, 16})
     {
       EdgeCrackParameters p;
-      p.horizon_ratio  = m;
-      p.box_size       = m == 16 ? 6. * p.horizon : 24. * p.horizon;
-      p.k_start        = 0.8;
-      p.k_end          = 1.5;
-      p.load_steps     = 15;
-      p.growth_to_stop = 4. * p.horizon / m;
+      p.pd.tolerance = 1e-6;
+      p.pd.horizon_over_spacing  = m;
+      p.edge.box_size       = m == 16 ? 6. * p.pd.horizon : 24. * p.pd.horizon;
+      p.edge.k_start        = 0.8;
+      p.edge.k_end          = 1.5;
+      p.edge.load_steps     = 15;
+      p.edge.growth_to_stop = 4. * p.pd.horizon / m;
       const auto r     = run_edge_crack(p, std::cout);
       SCOPED_TRACE("m = " + std::to_string(m));
       ASSERT_GT(r.onset_k_over_kc, 0.) << "the crack never grew";
@@ -268,14 +255,14 @@ TEST(CouplingExtremes, HorizonRatioTwoAndSixteen)
 // margin) from the hole's circle: the first exchange ends it cleanly, "reached the hole".
 TEST(CouplingExtremes, TipOneSpacingFromAHole)
 {
-  auto p          = coarse(output_directory("hole"));
-  p.initial_crack = {{0.1524, 0.}, {0.1524, 0.06985 - 0.00635 - h}};
-  p.max_exchanges = 4;
-  const auto r    = run(p);
+  auto p                  = coarse("hole");
+  p.scene.initial_cracks  = "0.1524,0; 0.1524," + std::to_string(0.06985 - 0.00635 - h);
+  p.cycle.max_exchanges   = 4;
+  const auto r            = run(p);
   expect_finite(r);
   EXPECT_TRUE(contains(r.stop_reason, "reached the hole at (0.1524, 0.06985)")) << r.stop_reason;
   EXPECT_LE(r.exchanges.size(), 2u);
-  EXPECT_TRUE(std::filesystem::exists(p.output_directory + "/checkpoint.h5"));
+  EXPECT_TRUE(std::filesystem::exists(p.scene.output_directory + "/checkpoint.h5"));
 }
 
 // 5b. A short crack (8 mm) at the bottom edge: the box the policy places around its tip reaches
@@ -283,9 +270,9 @@ TEST(CouplingExtremes, TipOneSpacingFromAHole)
 // there). Two exchanges run and the crack grows.
 TEST(CouplingExtremes, BoxOnTheBodyOutline)
 {
-  auto p          = coarse(output_directory("outline_box"));
-  p.initial_crack = {{0.1016, 0.}, {0.1016, 0.008}};
-  p.max_exchanges = 2;
+  auto p                 = coarse("outline_box");
+  p.scene.initial_cracks = "0.1016,0; 0.1016,0.008";
+  p.cycle.max_exchanges  = 2;
   const auto r    = run(p);
   expect_finite(r);
   EXPECT_EQ(r.stop_reason, "maximum exchanges");
@@ -299,9 +286,9 @@ TEST(CouplingExtremes, BoxOnTheBodyOutline)
 // 3 P_c, the advance accepted because it arrives at the outline).
 TEST(CouplingExtremes, CrackReachesTheOutline)
 {
-  auto p          = coarse(output_directory("outline_reach"), false);
-  p.initial_crack = {{0.2, 0.}, {0.2, 0.185}};
-  p.max_exchanges = 8;
+  auto p                 = coarse("outline_reach", false);
+  p.scene.initial_cracks = "0.2,0; 0.2,0.185";
+  p.cycle.max_exchanges  = 8;
   const auto r    = run(p);
   expect_finite(r);
   EXPECT_EQ(r.stop_reason, "reached the outline");
@@ -315,14 +302,14 @@ TEST(CouplingExtremes, CrackReachesTheOutline)
 // stops with "the load is too small to grow the crack", the crack unchanged, the state saved.
 TEST(CouplingExtremes, LoadTooSmallToGrowTheCrack)
 {
-  auto p                     = coarse(output_directory("too_small"));
-  p.exchange.max_load_factor = 0.95;
-  const auto r               = run(p);
+  auto p                           = coarse("too_small");
+  p.cycle.exchange.max_load_factor = 0.95;
+  const auto r                     = run(p);
   expect_finite(r);
   EXPECT_TRUE(contains(r.stop_reason, "the load is too small to grow the crack")) << r.stop_reason;
   EXPECT_EQ(r.exchanges.size(), 1u);
   EXPECT_EQ(r.path.size(), 2u);
-  EXPECT_TRUE(std::filesystem::exists(p.output_directory + "/checkpoint.h5"));
+  EXPECT_TRUE(std::filesystem::exists(p.scene.output_directory + "/checkpoint.h5"));
 }
 
 // 5e. First load factor 5 (and maximum 6): the box is overloaded far beyond the critical load.
@@ -335,10 +322,10 @@ TEST(CouplingExtremes, LoadTooSmallToGrowTheCrack)
 // to do and said so.
 TEST(CouplingExtremes, LoadThatShattersTheBox)
 {
-  auto p                       = coarse(output_directory("shatter"));
-  p.exchange.first_load_factor = 5.;
-  p.exchange.max_load_factor   = 6.;
-  p.max_exchanges              = 1;
+  auto p                             = coarse("shatter");
+  p.cycle.exchange.first_load_factor = 5.;
+  p.cycle.exchange.max_load_factor   = 6.;
+  p.cycle.max_exchanges              = 1;
   const auto r                 = run(p);
   expect_finite(r);
   ASSERT_EQ(r.exchanges.size(), 1u);
@@ -348,10 +335,10 @@ TEST(CouplingExtremes, LoadThatShattersTheBox)
   if (decision == "branching")
     EXPECT_TRUE(contains(r.stop_reason, "crack branching in the PD box, refused")) << r.stop_reason;
   else
-    EXPECT_LE(r.exchanges.front().advance, p.exchange.max_advance + 1e-9);
-  ASSERT_TRUE(std::filesystem::exists(p.output_directory + "/checkpoint.h5"));
-  p.resume        = true;
-  p.max_exchanges = 2;
+    EXPECT_LE(r.exchanges.front().advance, p.cycle.exchange.max_advance + 1e-9);
+  ASSERT_TRUE(std::filesystem::exists(p.scene.output_directory + "/checkpoint.h5"));
+  p.cycle.resume        = true;
+  p.cycle.max_exchanges = 2;
   GlobalLocalResult resumed;
   ASSERT_NO_THROW(resumed = run(p));
   expect_finite(resumed);
@@ -382,9 +369,8 @@ TEST(CouplingExtremes, LoadThatShattersTheBox)
 // positive at every step, and the initial K_I, K_II those of a nearby generic tip (below).
 TEST(CouplingExtremes, LefmGrowthFromTipOnVertexAndEdge)
 {
-  const std::string        mesh = source + "/meshes/ingraffea-beam.geo";
   dealii::Triangulation<2> tria;
-  global::read_mesh(mesh, tria, 0.016);
+  global::read_mesh("meshes/ingraffea-beam.geo", tria, 0.016);
   // The vertex nearest (0.1016, 0.0254), and the midpoint of the edge nearest it; the crack runs
   // to them from the bottom edge, vertically.
   geometry::Point vertex{1e9, 1e9}, midpoint{1e9, 1e9};
@@ -406,15 +392,21 @@ TEST(CouplingExtremes, LefmGrowthFromTipOnVertexAndEdge)
        {std::tuple<std::string, geometry::Point, unsigned int>{"vertex", vertex, 1}, {"edge", midpoint, 0}})
     {
       SCOPED_TRACE(name);
-      LefmGrowthParameters p;
-      p.mesh_file         = mesh;
-      p.mesh_size         = 0.016;
-      p.initial_crack     = {{tip.x, 0.}, tip};
-      p.max_steps         = 5;
-      p.refinement_levels = levels;
-      p.tip_radius        = 0.016;
+      auto p = test::scene_file("tests/regression/ingraffea-case1-lefm-coarse.prm", "");
+      p.lefm.max_steps               = 5;
+      p.lefm.growth_increment        = 0.004;
+      p.lefm.halving_angle           = 0.;
+      p.global.refinement_levels     = levels;
+      p.global.refinement_radius     = 0.012;
+      p.global.tip_radius            = 0.016;
+      const auto crack = [](geometry::Point a, geometry::Point b) {
+        std::ostringstream text;
+        text << std::setprecision(17) << a.x << "," << a.y << "; " << b.x << "," << b.y;
+        return text.str();
+      };
+      p.scene.initial_cracks = crack({tip.x, 0.}, tip);
       LefmGrowthResult r;
-      ASSERT_NO_THROW(r = run_lefm_growth(p, std::cout));
+      ASSERT_NO_THROW(r = run_lefm_growth(build_scene(p.scene), p.lefm_growth_settings(), std::cout));
       EXPECT_EQ(r.increments, 5u);
       ASSERT_GE(r.steps.size(), 5u);
       for (const auto &s : r.steps)
@@ -425,10 +417,10 @@ TEST(CouplingExtremes, LefmGrowthFromTipOnVertexAndEdge)
       // Not a wrong answer either: the initial K_I, K_II match those of a generic tip 0.3 mm
       // further along the diagonal (which changes them by ~0.7 %) within 2 % of K_I.
       // (The off-centre crack of Case I is mixed-mode: K_II / K_I = 0.11-0.14.)
-      p.initial_crack = {{tip.x + 3e-4, 0.}, tip + geometry::Point{3e-4, 3e-4}};
-      p.max_steps     = 1;
+      p.scene.initial_cracks = crack({tip.x + 3e-4, 0.}, tip + geometry::Point{3e-4, 3e-4});
+      p.lefm.max_steps       = 1;
       std::ostringstream log;
-      const auto         generic = run_lefm_growth(p, log);
+      const auto         generic = run_lefm_growth(build_scene(p.scene), p.lefm_growth_settings(), log);
       const auto        &a = r.steps.front(), &b = generic.steps.front();
       std::cout << name << ": K_I " << a.k1 << ", K_II " << a.k2 << "; generic tip: K_I " << b.k1 << ", K_II " << b.k2
                 << "\n";

@@ -15,6 +15,7 @@
 #include "expect_invalid.h"
 #include "full_pd.h"
 #include "metric.h"
+#include "scene_file.h"
 
 using namespace pumpd;
 using pumpd::test::expect_invalid;
@@ -24,18 +25,26 @@ namespace
 {
   /// A coarse beam: delta = 8 mm, m = 2 (h = 4 mm, ~6300 nodes), a deeper notch than Case II's
   /// (K at the notch rises faster than the bending stress elsewhere: at this coarse horizon the PD
-  /// strength ~K_c / sqrt(pi delta) is low and a shallow notch would lose to the top fibre).
-  FullPdParameters coarse()
+  /// strength ~K_c / sqrt(pi delta) is low and a shallow notch would lose to the top fibre);
+  /// no-fail zones of 5 horizons (4 cm) around the supports and the pad.
+  coupling::Parameters coarse(const std::string &output = "")
   {
-    FullPdParameters p;
-    p.horizon          = 0.008;
-    p.horizon_ratio    = 2;
-    p.tolerance        = 1e-8;
-    p.initial_crack    = {{0.1016, 0.}, {0.1016, 0.0508}};
-    p.max_steps        = 150;
-    p.stall_steps      = 4;
-    p.output_interval  = 1000;
+    auto p                         = test::scene_file("prm/ingraffea-case2-fullpd.prm", output);
+    p.pd.horizon                   = 0.008;
+    p.pd.horizon_over_spacing      = 2;
+    p.pd.tolerance                 = 1e-8;
+    p.scene.initial_cracks         = "0.1016,0; 0.1016,0.0508";
+    p.scene.reference_path         = "";
+    p.full_pd.no_fail_horizons     = 5.;
+    p.full_pd.max_steps            = 150;
+    p.full_pd.stall_steps          = 4;
+    p.full_pd.output_interval      = 1000;
     return p;
+  }
+
+  FullPdResult run_case(const coupling::Parameters &p, std::ostream &log)
+  {
+    return run_full_pd(build_scene(p.scene), p.full_pd_settings(), log);
   }
 
   /// The coarse beam under the default control (crack-mouth opening), run once for the tests that
@@ -43,11 +52,8 @@ namespace
   const FullPdResult &mouth_controlled_run()
   {
     static const FullPdResult result = [] {
-      FullPdParameters p = coarse();
-      p.output_directory = (std::filesystem::temp_directory_path() / "pumpd_full_pd_test").string();
-      std::filesystem::remove_all(p.output_directory);
       std::ostringstream log;
-      auto               r = run_full_pd(p, log);
+      auto               r = run_case(coarse("full_pd_test"), log);
       std::cout << log.str();
       return r;
     }();
@@ -57,27 +63,27 @@ namespace
 
 TEST(FullPd, CrackGrowsUpwardsFromTheNotch)
 {
-  const FullPdParameters p = coarse();
-  const std::string      output_directory =
-    (std::filesystem::temp_directory_path() / "pumpd_full_pd_test").string();
-  const auto &r = mouth_controlled_run();
+  const auto        p                = coarse();
+  const std::string output_directory = (std::filesystem::temp_directory_path() / "pumpd_full_pd_test").string();
+  const auto       &r                = mouth_controlled_run();
 
-  const auto   tip0   = p.initial_crack.back();
-  const auto   end    = r.path.back();
-  const double growth = geometry::length(r.path) - geometry::length(p.initial_crack);
+  const geometry::Polyline initial{{0.1016, 0.}, {0.1016, 0.0508}};
+  const auto               tip0   = initial.back();
+  const auto               end    = r.path.back();
+  const double             growth = geometry::length(r.path) - geometry::length(initial);
   std::cout << "stop: " << r.stop_reason << "; growth " << growth << " m, end (" << end.x << ", " << end.y << ")\n";
   EXPECT_GT(growth, 0.01);
   EXPECT_GT(end.y - tip0.y, 0.) << "the crack ends in the upper half-plane of the initial tip";
-  for (std::size_t k = p.initial_crack.size(); k < r.path.size(); ++k)
-    EXPECT_GE(r.path[k].y, tip0.y - 0.5 * p.horizon / p.horizon_ratio) << "vertex " << k << " below the tip";
+  for (std::size_t k = initial.size(); k < r.path.size(); ++k)
+    EXPECT_GE(r.path[k].y, tip0.y - 0.5 * p.pd.spacing()) << "vertex " << k << " below the tip";
   EXPECT_GT(r.nodes, 5000u);
   EXPECT_GT(r.node_steps, 0.);
-  for (const char *file : {"crack_path.csv", "load_steps.csv", "body.csv", "pd.pvd"})
+  for (const char *file : {"crack_path.csv", "load_steps.csv", "load_displacement.csv", "body.csv", "pd.pvd"})
     EXPECT_TRUE(std::filesystem::exists(output_directory + "/" + file)) << file;
   std::ifstream steps(output_directory + "/load_steps.csv");
   std::string   header;
   std::getline(steps, header);
-  EXPECT_EQ(header.rfind("step,load_point_displacement_m,crack_mouth_opening_m,load_N_per_m,crack_length_m", 0), 0u)
+  EXPECT_EQ(header.rfind("step,control_displacement_m,crack_mouth_opening_m,lambda,load,displacement,crack_length_m", 0), 0u)
     << header;
   test::metric("fullpd.test_growth_m", growth);
 }
@@ -96,15 +102,15 @@ TEST(FullPd, CrackMouthControlTracesTheSnapBack)
         return st.crack_length - length0;
     return 0.;
   };
-  const double length0 = geometry::length(coarse().initial_crack);
+  const double length0 = 0.0508;
 
-  FullPdParameters by_load = coarse();
-  by_load.control          = FullPdParameters::Control::load_point;
-  by_load.stall_steps      = 1;
-  const auto load_run      = run_full_pd(by_load, log);
+  auto by_load                = coarse();
+  by_load.full_pd.control     = "load point";
+  by_load.full_pd.stall_steps = 1;
+  const auto load_run         = run_case(by_load, log);
 
-  const FullPdParameters by_mouth  = coarse();
-  const auto            &mouth_run = mouth_controlled_run();
+  const auto  by_mouth  = coarse();
+  const auto &mouth_run = mouth_controlled_run();
 
   double largest_step = 0., previous_length = length0;
   bool   turned_back  = false;
@@ -123,48 +129,41 @@ TEST(FullPd, CrackMouthControlTracesTheSnapBack)
             << "\n";
   EXPECT_TRUE(turned_back) << "the load-point displacement never decreased while the crack grew";
   EXPECT_GT(previous_length - length0, 0.01);
-  EXPECT_LT(largest_step, 2. * by_mouth.horizon);
+  EXPECT_LT(largest_step, 2. * by_mouth.pd.horizon);
   EXPECT_GT(first_growth(load_run, length0), 2. * first_growth(mouth_run, length0));
 }
 
+// Bad input: a value outside its pattern is refused by the parameter file (each named; the bad
+// scene files of tests/coupling/bad_prm), the checks across entries and against the scene here.
 TEST(FullPd, BadInputIsRefused)
 {
   std::ostringstream log;
-  const auto         run = [&](const std::function<void(FullPdParameters &)> &change) {
+  const auto         run_with = [&](const std::function<void(coupling::Parameters &)> &change) {
     return [&log, change] {
-      FullPdParameters p = coarse();
+      auto p = coarse();
       change(p);
-      run_full_pd(p, log);
+      run_case(p, log);
     };
   };
-  expect_invalid(run([](auto &p) { p.outline = {0., 0., 0., 0.2}; }), "Beam outline", "positive width and height");
-  expect_invalid(run([](auto &p) { p.holes = {{{0.6, 0.1}, 0.01}}; }), "Holes", "inside the beam outline");
-  expect_invalid(run([](auto &p) { p.holes = {{{0.2, 0.1}, 0.}}; }), "Holes", "radius > 0");
-  expect_invalid(run([](auto &p) { p.initial_crack = {{0.1, 0.}}; }), "Initial crack", "at least 2 points");
-  expect_invalid(run([](auto &p) { p.initial_crack = {{0.6, 0.}, {0.6, 0.02}}; }), "Initial crack", "inside the beam outline");
-  expect_invalid(run([](auto &p) { p.load_point = {0.254, 0.3}; }), "Load point", "on or inside the beam outline");
-  expect_invalid(run([](auto &p) { p.support_radius = -0.001; }), "Support radius", "in [0, half the beam's smaller side]");
-  expect_invalid(run([](auto &p) { p.support_radius = 0.01, p.no_fail_radius = 0.005; }), "No-fail radius",
-                 "[Support radius, half the beam's smaller side]");
-  expect_invalid(run([](auto &p) { p.horizon = 0.; }), "Horizon", "> 0");
-  expect_invalid(run([](auto &p) { p.horizon_ratio = 1; }), "Horizon over spacing", ">= 2");
-  expect_invalid(run([](auto &p) { p.crack_damage = 0.99; }), "Crack damage threshold", "[0.05, 0.95]");
-  expect_invalid(run([](auto &p) { p.onset_stretch_ratio = 1.5; }), "Onset stretch ratio", "[0.001, 1]");
-  expect_invalid(run([](auto &p) { p.min_increment = 0.; }), "Minimum increment", "[1e-6, 1]");
-  expect_invalid(run([](auto &p) { p.max_increment = 0.001; }), "Maximum increment", "[Minimum increment, 1]");
-  expect_invalid(run([](auto &p) { p.first_increment = 0.2; }), "First increment",
+  expect_invalid(run_with([](auto &p) { p.full_pd.support_radius = 0.2; }), "Support radius",
+                 "in [0, half the body's smaller side]");
+  expect_invalid(run_with([](auto &p) { p.full_pd.max_increment = 0.001; }), "Maximum increment",
+                 "[Minimum increment, 1]");
+  expect_invalid(run_with([](auto &p) { p.full_pd.first_increment = 0.2; }), "First increment",
                  "[Minimum increment, Maximum increment]");
-  expect_invalid(run([](auto &p) { p.target_advance = -1.; }), "Target advance", ">= 0 m");
-  expect_invalid(run([](auto &p) { p.max_advance = 0.001; }), "Maximum advance", "at least the target advance");
-  expect_invalid(run([](auto &p) { p.max_displacement = 0.; }), "Maximum displacement", "> 0");
-  expect_invalid(run([](auto &p) { p.max_steps = 0; }), "Maximum steps", ">= 1");
-  expect_invalid(run([](auto &p) { p.stall_steps = 0; }), "Stall steps", ">= 1");
-  expect_invalid(run([](auto &p) { p.hole_margin = 0.2; }), "Hole margin", "[0, 0.1] m");
-  expect_invalid(run([](auto &p) { p.output_interval = 0; }), "Output interval", ">= 1");
-  expect_invalid(run([](auto &p) { p.servo_gain = 0.; }), "Servo gain", "[1e-6, 1]");
-  expect_invalid(run([](auto &p) { p.gauge_distance = 0.2; }), "Gauge distance", "[0, a quarter of the beam's width]");
-  expect_invalid(run([](auto &p) { p.published_path = "no-such-path.csv"; }), "Published path", "cannot be opened");
-  // A support region that holds no node: the pin off the body's material (inside a hole).
-  expect_invalid(run([](auto &p) { p.pin = {0.1524, 0.12065}; p.support_radius = 0.002; p.no_fail_radius = 0.; }),
-                 "Pin support", "holds no PD node");
+  expect_invalid(run_with([](auto &p) { p.full_pd.max_advance = 0.001; }), "Maximum advance",
+                 "at least the target advance");
+  expect_invalid(run_with([](auto &p) { p.full_pd.gauge_distance = 0.2; }), "Gauge distance",
+                 "[0, a quarter of the body's width]");
+  expect_invalid(run_with([](auto &p) { p.scene.traction = "top: ty = -lambda"; }), "Traction",
+                 "tractions cannot be applied");
+  expect_invalid(run_with([](auto &p) { p.scene.displacement += "; left: ux = lambda * 1e-4"; }), "Point force",
+                 "not both or several forces");
+  expect_invalid(run_with([](auto &p) { p.scene.material.poisson_ratio = 0.35; }), "Poisson's ratio",
+                 "bond-based peridynamics has nu = 1/4 in plane strain");
+  expect_invalid(run_with([](auto &p) { p.scene.initial_cracks = "0.2,0.05; 0.2,0.1"; }), "Control",
+                 "crack-mouth control needs a crack with a mouth");
+  // A support region that holds no node: a support radius below half a spacing misses the lattice.
+  expect_invalid(run_with([](auto &p) { p.full_pd.support_radius = 0.001; p.full_pd.no_fail_horizons = 0.; }),
+                 "pin", "holds no PD node");
 }

@@ -20,6 +20,7 @@
 #include "elasticity.h"
 #include "lefm.h"
 #include "lefm_growth.h"
+#include "scene_file.h"
 
 using namespace pumpd;
 using geometry::Point;
@@ -29,20 +30,22 @@ namespace
   const double pi      = std::acos(-1.);
   const double mode_ii = 2. * std::atan(1. / std::sqrt(2.)); // 70.53 degrees
 
-  const std::string beam  = PUMPD_SOURCE_DIR "/meshes/ingraffea-beam.geo";
-  const std::string holes = PUMPD_SOURCE_DIR "/meshes/ingraffea-beam-holes.geo";
+  const std::string beam  = "meshes/ingraffea-beam.geo";
+  const std::string holes = "meshes/ingraffea-beam-holes.geo";
 
-  /// Coarse Ingraffea beam (cells of 16 mm, 8 mm in the crack band), no refinement.
-  coupling::LefmGrowthParameters coarse(const std::string &mesh)
+  /// Coarse Ingraffea beam (cells of 16 mm, 8 mm in the crack band), no refinement, da = 8 mm.
+  coupling::Parameters coarse(const std::string &mesh)
   {
-    coupling::LefmGrowthParameters p;
-    p.mesh_file         = mesh;
-    p.mesh_size         = 0.016;
-    p.initial_crack     = {{0.1016, 0.}, {0.1016, 0.0254}};
-    p.tip_radius        = 0.02;
-    p.refinement_levels = 0;
-    p.growth_increment  = 0.008;
+    auto p                     = test::scene_file("tests/regression/ingraffea-case1-lefm-coarse.prm", "");
+    p.scene.mesh_file          = mesh;
+    p.lefm.halving_angle       = 0.;
+    p.growth.max_crack_length  = 0.;
     return p;
+  }
+
+  coupling::LefmGrowthResult run(const coupling::Parameters &p)
+  {
+    return coupling::run_lefm_growth(coupling::build_scene(p.scene), p.lefm_growth_settings(), std::cout);
   }
 
   /// The square [-1, 1]^2, 40 x 40 cells, boundary ids 0 left, 1 right, 2 bottom, 3 top.
@@ -169,9 +172,9 @@ TEST(LefmGrowth, SlantedEdgeCrackUnderTensionKinksTowardsTheNormalPlane)
 
 TEST(LefmGrowth, CoarseCaseIPathGrowsByIncrementsTowardsTheLoad)
 {
-  auto p      = coarse(beam);
-  p.max_steps = 4;
-  const auto r = coupling::run_lefm_growth(p, std::cout);
+  auto p           = coarse(beam);
+  p.lefm.max_steps = 4;
+  const auto r     = run(p);
   EXPECT_EQ(r.increments, 4u);
   EXPECT_EQ(r.steps.size(), 5u); // 4 growth steps and the solve of the final crack
   EXPECT_EQ(r.stop_reason, "maximum steps");
@@ -195,9 +198,9 @@ TEST(LefmGrowth, CoarseCaseIPathGrowsByIncrementsTowardsTheLoad)
 
 TEST(LefmGrowth, CoarseCaseIIsClippedToTheOutline)
 {
-  auto p             = coarse(beam);
-  p.growth_increment = 0.016;
-  const auto r       = coupling::run_lefm_growth(p, std::cout);
+  auto p                  = coarse(beam);
+  p.lefm.growth_increment = 0.016;
+  const auto r            = run(p);
   EXPECT_NE(r.stop_reason.find("reached the outline"), std::string::npos) << r.stop_reason;
   EXPECT_NE(r.stop_reason.find("cut the body through"), std::string::npos) << r.stop_reason;
   EXPECT_NEAR(r.path.back().y, 0.2032, 1e-12); // on the top edge
@@ -208,11 +211,11 @@ TEST(LefmGrowth, CoarseCaseIIsClippedToTheOutline)
 TEST(LefmGrowth, CrackAimedAtAHoleStopsBeforeIt)
 {
   // Vertical crack below the lowest hole (centre (0.1524, 0.06985), radius 0.00635).
-  auto p             = coarse(holes);
-  p.initial_crack    = {{0.1524, 0.}, {0.1524, 0.045}};
-  p.growth_increment = 0.006;
-  p.hole_margin      = 0.001;
-  const auto r       = coupling::run_lefm_growth(p, std::cout);
+  auto p                    = coarse(holes);
+  p.scene.initial_cracks    = "0.1524,0; 0.1524,0.045";
+  p.lefm.growth_increment   = 0.006;
+  p.growth.hole_margin      = 0.001;
+  const auto r              = run(p);
   const Point  centre{0.1524, 0.06985};
   const double radius = 0.00635;
   EXPECT_NE(r.stop_reason.find("before a hole"), std::string::npos) << r.stop_reason;
@@ -220,7 +223,7 @@ TEST(LefmGrowth, CrackAimedAtAHoleStopsBeforeIt)
   EXPECT_LT(r.increments, 5u);
   // The tip stops on the circle of radius r + margin (the mesh's hole, a polygon inscribed in
   // the circle of radius r, is further away), and no segment enters the hole.
-  EXPECT_NEAR(geometry::norm(r.path.back() - centre), radius + p.hole_margin, 2e-5);
+  EXPECT_NEAR(geometry::norm(r.path.back() - centre), radius + p.growth.hole_margin, 2e-5);
   for (std::size_t k = 1; k < r.path.size(); ++k)
-    EXPECT_GT(geometry::distance_to_segment(centre, r.path[k - 1], r.path[k]), radius + 0.5 * p.hole_margin);
+    EXPECT_GT(geometry::distance_to_segment(centre, r.path[k - 1], r.path[k]), radius + 0.5 * p.growth.hole_margin);
 }

@@ -20,10 +20,11 @@ TEST(EdgeCrack, OnsetAtKcAndStraightGrowth)
   for (int m : {4, 8})
     {
       coupling::EdgeCrackParameters p; // the decks' PMMA, delta = 4 mm, box 24 delta
-      p.horizon_ratio = m;
-      p.k_start       = 0.8;
-      p.k_end         = 1.3;
-      p.load_steps    = 21; // K steps of 0.025 K_c
+      p.pd.tolerance = 1e-6;
+      p.pd.horizon_over_spacing = m;
+      p.edge.k_start       = 0.8;
+      p.edge.k_end         = 1.3;
+      p.edge.load_steps    = 21; // K steps of 0.025 K_c
       const auto r    = coupling::run_edge_crack(p, std::cout);
 
       ASSERT_GT(r.onset_k_over_kc, 0.) << "the crack never grew, m = " << m;

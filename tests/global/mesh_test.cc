@@ -1,17 +1,20 @@
 // The Ingraffea beam meshes (meshes/*.geo) and their reader (global/mesh.h): all-quad
-// triangulations of the right area, boundary ids 1-5, vertices at the supports and the load
-// point, the characteristic length override, and the errors the reader raises.
+// triangulations of the right area, the physical names (edges, holes, the supports and the load
+// point), the body they cover (straight outline, circular holes), the size override and its
+// cell limit, and the errors the reader raises.
 #include <deal.II/grid/reference_cell.h>
 #include <deal.II/grid/tria.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <functional>
 #include <map>
+#include <set>
 #include <string>
 
 #include "error.h"
@@ -19,9 +22,9 @@
 
 namespace
 {
-  using pumpd::global::find_vertex;
+  using pumpd::global::body_of;
+  using pumpd::global::MeshNames;
   using pumpd::global::read_mesh;
-  using pumpd::global::require_boundary_ids;
 
   const std::string beam_geo  = PUMPD_SOURCE_DIR "/meshes/ingraffea-beam.geo";
   const std::string holes_geo = PUMPD_SOURCE_DIR "/meshes/ingraffea-beam-holes.geo";
@@ -32,9 +35,9 @@ namespace
   const double     pi          = std::acos(-1.);
 
   /// Meshing runs gmsh: every (file, h) is meshed once per test program.
-  const dealii::Triangulation<2> &mesh(const std::string &file, double h = 0.)
+  const dealii::Triangulation<2> &mesh(const std::string &file, double h = 0., MeshNames *names = nullptr)
   {
-    static std::map<std::pair<std::string, double>, dealii::Triangulation<2>> cache;
+    static std::map<std::pair<std::string, double>, std::pair<dealii::Triangulation<2>, MeshNames>> cache;
     const auto key = std::make_pair(file, h);
     auto       it  = cache.find(key);
     if (it == cache.end())
@@ -42,9 +45,11 @@ namespace
         it = cache.emplace(std::piecewise_construct, std::forward_as_tuple(key),
                            std::forward_as_tuple())
                .first;
-        read_mesh(file, it->second, h);
+        it->second.second = read_mesh(file, it->second.first, h);
       }
-    return it->second;
+    if (names)
+      *names = it->second.second;
+    return it->second.first;
   }
 
   double area(const dealii::Triangulation<2> &tria)
@@ -155,11 +160,24 @@ TEST(GlobalMesh, BeamWithHolesLosesThePolygonAreaOfTheHoles)
   EXPECT_LT(std::abs(measured), 1e-3 * length * height);
 }
 
-TEST(GlobalMesh, BoundaryIds)
+TEST(GlobalMesh, PhysicalNames)
 {
-  EXPECT_NO_THROW(require_boundary_ids(mesh(holes_geo), {1, 2, 3, 4, 5}));
-  EXPECT_NO_THROW(require_boundary_ids(mesh(beam_geo), {1, 2, 3, 4}));
-  EXPECT_EQ(n_boundary_faces(mesh(beam_geo), 5), 0u);
+  MeshNames names;
+  mesh(holes_geo, 0., &names);
+  const std::map<std::string, dealii::types::boundary_id> curves = {
+    {"bottom", 1}, {"right", 2}, {"top", 3}, {"left", 4}, {"holes", 5}};
+  EXPECT_EQ(names.boundaries, curves);
+  EXPECT_EQ(names.regions.at("beam"), 1u);
+  const std::map<std::string, pumpd::geometry::Point> points = {
+    {"pin", {0.0254, 0.}}, {"roller", {0.4826, 0.}}, {"load", {0.254, 0.2032}}};
+  ASSERT_EQ(names.points.size(), 3u);
+  for (const auto &[name, x] : points)
+    {
+      ASSERT_EQ(names.points.at(name).size(), 1u) << name;
+      EXPECT_EQ(names.points.at(name)[0].x, x.x) << name;
+      EXPECT_EQ(names.points.at(name)[0].y, x.y) << name;
+    }
+  // Each named curve holds the faces on its edge.
   for (const auto &cell : mesh(beam_geo).active_cell_iterators())
     for (const auto &face : cell->face_iterators())
       if (face->at_boundary())
@@ -175,21 +193,28 @@ TEST(GlobalMesh, BoundaryIds)
         }
 }
 
-TEST(GlobalMesh, VerticesAtTheSupportsAndTheLoadPoint)
+// The body the mesh covers: the rectangle as four segments, each hole as one circle through its
+// mesh vertices (exact: gmsh puts them on the arcs).
+TEST(GlobalMesh, BodyOfTheBeamWithHoles)
 {
-  for (const std::string &file : {beam_geo, holes_geo})
+  const auto body = body_of(mesh(holes_geo));
+  EXPECT_EQ(body.outline().pieces.size(), 4u);
+  const auto &b = body.bounding_box();
+  EXPECT_EQ(b.x_min, 0.);
+  EXPECT_EQ(b.y_min, 0.);
+  EXPECT_NEAR(b.x_max, length, 1e-15);
+  EXPECT_NEAR(b.y_max, height, 1e-15);
+  ASSERT_EQ(body.holes().size(), 3u);
+  const double ys[] = {0.06985, 0.12065, 0.17145};
+  for (const auto &hole : body.holes())
     {
-      const auto &tria = mesh(file);
-      for (const pumpd::geometry::Point p : {pumpd::geometry::Point{0.0254, 0.},
-                                             pumpd::geometry::Point{0.4826, 0.},
-                                             pumpd::geometry::Point{0.254, 0.2032}})
-        {
-          unsigned int v = 0;
-          ASSERT_NO_THROW(v = find_vertex(tria, p, 1e-9)) << file << ": " << p.x << ", " << p.y;
-          EXPECT_NEAR(tria.get_vertices()[v][0], p.x, 1e-9);
-          EXPECT_NEAR(tria.get_vertices()[v][1], p.y, 1e-9);
-        }
+      pumpd::geometry::Circle c;
+      ASSERT_TRUE(hole.circle(c));
+      EXPECT_NEAR(c.centre.x, 0.1524, 1e-11);
+      EXPECT_NEAR(c.radius, hole_radius, 1e-11);
+      EXPECT_TRUE(std::any_of(std::begin(ys), std::end(ys), [&](double y) { return std::abs(c.centre.y - y) < 1e-11; }));
     }
+  EXPECT_NEAR(body.area(), length * height - 3. * pi * hole_radius * hole_radius, 1e-12);
 }
 
 TEST(GlobalMesh, CharacteristicLengthOverride)
@@ -216,9 +241,10 @@ TEST(GlobalMesh, ReadsMsh)
   read_mesh(file.path(), tria);
   EXPECT_EQ(tria.n_active_cells(), 1u);
   EXPECT_NEAR(area(tria), 1., 1e-14);
-  EXPECT_NO_THROW(require_boundary_ids(tria, {1, 3}));
-  EXPECT_TRUE(starts_with(invalid_parameter([&] { require_boundary_ids(tria, {1, 2}); }),
-                          "Mesh boundary id = 2: "));
+  std::set<unsigned int> ids;
+  for (const auto &face : tria.begin_active()->face_iterators())
+    ids.insert(face->boundary_id());
+  EXPECT_EQ(ids, (std::set<unsigned int>{0, 1, 3}));
 }
 
 TEST(GlobalMesh, Errors)
@@ -229,17 +255,13 @@ TEST(GlobalMesh, Errors)
   what = invalid_parameter([&] { read_mesh("/nonexistent/beam.msh", tria); });
   EXPECT_EQ(what, "Mesh file = /nonexistent/beam.msh: no such file");
 
-  what = invalid_parameter([&] { require_boundary_ids(mesh(beam_geo), {1, 7}); });
-  EXPECT_TRUE(starts_with(what, "Mesh boundary id = 7: ")) << what;
-  what = invalid_parameter([&] { require_boundary_ids(mesh(beam_geo), {5}); });
-  EXPECT_TRUE(starts_with(what, "Mesh boundary id = 5: ")) << what;
-
-  // The centre of the middle hole is no vertex.
-  what = invalid_parameter([&] { find_vertex(mesh(holes_geo), {0.1524, 0.12065}, 1e-9); });
-  EXPECT_TRUE(starts_with(what, "Mesh vertex = (0.1524, 0.12065): ")) << what;
-
   what = invalid_parameter([&] { read_mesh(beam_geo, tria, -1.); });
-  EXPECT_TRUE(starts_with(what, "Mesh characteristic length = -1: ")) << what;
+  EXPECT_TRUE(starts_with(what, "Mesh size = -1: ")) << what;
+
+  // A size that would make too many cells is refused before gmsh meshes (it would run for hours).
+  what = invalid_parameter([&] { read_mesh(beam_geo, tria, 1e-5, 5e5); });
+  EXPECT_TRUE(starts_with(what, "Mesh size = 1e-05: the mesh would have about")) << what;
+  EXPECT_NE(what.find("more than Maximum cells = 5e+05"), std::string::npos) << what;
 
   const TemporaryFile text("beam.txt", "not a mesh\n");
   what = invalid_parameter([&] { read_mesh(text.path(), tria); });

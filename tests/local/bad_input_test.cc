@@ -31,7 +31,7 @@ namespace
   Region good_region()
   {
     Region r;
-    r.body.outline = {0., 0., 0.1, 0.1};
+    r.body = geometry::Body(geometry::Box{0., 0., 0.1, 0.1});
     r.box          = {0.03, 0.03, 0.07, 0.07};
     return r;
   }

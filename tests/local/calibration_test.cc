@@ -30,7 +30,7 @@ namespace
     p.influence    = influence;
     const double delta = 0.004;
     Region       region;
-    region.body.outline = {-1., -1., 1., 1.};
+    region.body = geometry::Body(geometry::Box{-1., -1., 1., 1.});
     region.box          = {0., 0., 5. * delta, 5. * delta};
     PdModel model(p, delta, m, region);
 

@@ -45,7 +45,7 @@ namespace
   Region cracked_region(double box_size = 0.04)
   {
     Region r;
-    r.body.outline = {0., 0., 0.1, 0.1};
+    r.body = geometry::Body(geometry::Box{0., 0., 0.1, 0.1});
     r.box          = {0.03, 0.03, 0.03 + box_size, 0.03 + box_size};
     r.cracks       = {{{0.03, yc}, {tip_x, yc}}};
     return r;

@@ -23,7 +23,7 @@ TEST(EnergyBalance, WorkEqualsStoredKineticAndDissipated)
   const double delta = 0.004, h = delta / m;
   const double width = 12. * delta, height = 8. * delta, notch = 3. * delta;
   Region       region;
-  region.body.outline = {-h, -1., width, 1.};
+  region.body = geometry::Body(geometry::Box{-h, -1., width, 1.});
   region.box          = {0., -0.5 * height, width, 0.5 * height};
   region.cracks       = {{{-h, 0.}, {notch, 0.}}};
   PdModel model(p, delta, m, region);

@@ -32,7 +32,7 @@ namespace
   Region region()
   {
     Region r;
-    r.body.outline = {0., 0., 0.1, 0.1};
+    r.body = geometry::Body(geometry::Box{0., 0., 0.1, 0.1});
     r.box          = {0.03, 0.03, 0.07, 0.07};
     return r;
   }
@@ -102,9 +102,9 @@ TEST(LocalExtremes, HoleOutsideTheBoxAddsNoPdNode)
 {
   const Region    plain = region();
   Region          far   = plain;
-  far.body.holes        = {{{0.085, 0.085}, 0.006}}; // 15 mm from the box corner, well beyond delta
+  far.body              = geometry::Body(plain.body.bounding_box(), {{{0.085, 0.085}, 0.006}}); // 15 mm from the box corner, well beyond delta
   Region          near  = plain;
-  near.body.holes       = {{{0.05, 0.05}, 0.006}};
+  near.body             = geometry::Body(plain.body.bounding_box(), {{{0.05, 0.05}, 0.006}});
   const PdModel   a(MaterialParameters{}, delta, m, plain), b(MaterialParameters{}, delta, m, far),
     c(MaterialParameters{}, delta, m, near);
   std::cout << "PD nodes: no hole " << a.nodes().size() << ", hole outside the box " << b.nodes().size()

@@ -24,10 +24,9 @@ namespace
     const double width = 12. * delta, height = 8. * delta, notch = 3. * delta;
     // Left and right edges on the body outline (free), top and bottom inside (pulled).
     Region region;
-    region.body.outline = {0., -1., width, 1.};
-    region.box          = {0., -0.5 * height, width, 0.5 * height};
-    region.cracks       = {{{-h, 0.}, {notch, 0.}}};
-    region.body.outline.x_min = -h; // the notch starts outside the strip
+    region.body   = geometry::Body(geometry::Box{-h, -1., width, 1.}); // the notch starts outside the strip
+    region.box    = {0., -0.5 * height, width, 0.5 * height};
+    region.cracks = {{{-h, 0.}, {notch, 0.}}};
     PdModel model(p, delta, m, region);
 
     BoundaryLayer           layer(model); // starts from zero displacement

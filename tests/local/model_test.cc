@@ -25,7 +25,7 @@ namespace
   Region box_in_body()
   {
     Region r;
-    r.body.outline = {0., 0., 0.1, 0.1};
+    r.body = geometry::Body(geometry::Box{0., 0., 0.1, 0.1});
     r.box          = {0.03, 0.03, 0.07, 0.07};
     return r;
   }
@@ -60,7 +60,7 @@ TEST(PdModel, BondsAcrossHoleAreAbsent)
   Region region = box_in_body();
   // Centre off the lattice symmetry lines so that no bond is tangent to the circle by accident.
   const geometry::Circle hole{{0.0502, 0.0497}, 0.0063};
-  region.body.holes = {hole};
+  region.body = geometry::Body(region.body.bounding_box(), {hole});
   const PdModel model(MaterialParameters{}, delta, m, region);
   const auto   &grid = model.lattice();
 

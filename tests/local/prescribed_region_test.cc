@@ -32,8 +32,8 @@ namespace
   Region bar()
   {
     Region r;
-    r.body.outline = {0., 0., length, width};
-    r.box          = r.body.outline;
+    r.body = geometry::Body(geometry::Box{0., 0., length, width});
+    r.box          = r.body.bounding_box();
     return r;
   }
 
@@ -137,8 +137,8 @@ TEST(PrescribedRegion, BarPulledByPadsMatchesUniaxialStress)
 TEST(PrescribedRegion, RollerLeavesUxFree)
 {
   Region r;
-  r.body.outline = {0., 0., 0.03, 0.02};
-  r.box          = r.body.outline;
+  r.body = geometry::Body(geometry::Box{0., 0., 0.03, 0.02});
+  r.box          = r.body.bounding_box();
   const std::vector<PrescribedRegion> regions = {
     PrescribedRegion::box("Roller", {0., 0., 0.03, 0.002}, false, true),
     PrescribedRegion::box("Top pad", {0., 0.018, 0.03, 0.02}, true, true),

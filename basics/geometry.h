@@ -1,6 +1,6 @@
 // Plain 2D geometry shared by local/, global/ and coupling/: points, boxes, circles,
-// polylines and the intersection tests the PD set-up and the crack logic need.
-// No peridynamics and no deal.II here (DESIGN.md: the one header global/ may include).
+// polylines and the intersection tests the PD set-up and the crack logic need (the body of a
+// specimen, its outline and holes, is body.h). No peridynamics and no deal.II here.
 #pragma once
 
 #include <vector>
@@ -38,16 +38,6 @@ namespace pumpd::geometry
     double height() const { return y_max - y_min; }
     bool   contains(Point p, double tolerance = 0.) const;
     bool   contains(const Box &other, double tolerance = 0.) const;
-  };
-
-  /// The solid: an outer rectangle minus circular holes (the Ingraffea beams).
-  struct Body
-  {
-    Box                 outline;
-    std::vector<Circle> holes;
-
-    /// True where there is material (inside the outline, outside every hole).
-    bool contains(Point p) const;
   };
 
   /// Distance from p to the segment [a, b].

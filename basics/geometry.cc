@@ -19,15 +19,6 @@ namespace pumpd::geometry
            contains(Point{other.x_max, other.y_max}, tolerance);
   }
 
-  bool Body::contains(Point p) const
-  {
-    if (!outline.contains(p))
-      return false;
-    return std::none_of(holes.begin(), holes.end(), [p](const Circle &c) {
-      return norm(p - c.centre) < c.radius;
-    });
-  }
-
   double distance_to_segment(Point p, Point a, Point b)
   {
     const Point  ab = b - a;

@@ -30,11 +30,3 @@ TEST(Geometry, DiskAndPolyline)
   EXPECT_FALSE(self_intersects(crack));
   EXPECT_TRUE(self_intersects({{0, 0}, {2, 0}, {2, 1}, {1, -1}}));
 }
-
-TEST(Geometry, BodyWithHoles)
-{
-  const Body body{{0, 0, 4, 2}, {{{1, 1}, 0.5}}};
-  EXPECT_TRUE(body.contains({3, 1}));
-  EXPECT_FALSE(body.contains({1.2, 1.1}));
-  EXPECT_FALSE(body.contains({5, 1}));
-}

@@ -1,0 +1,19 @@
+// pumpd_basics: what global/ and local/ share, knowing neither PD nor deal.II (DESIGN.md).
+//
+//   geometry.h  points, boxes, circles, polylines, segment tests
+//   body.h      the body of a specimen: outline and holes as curves of segments and arcs, built
+//               from a mesh's boundary edges; containment, clearance, bond and ray tests
+//   error.h     InvalidParameter (names the parameter and its allowed range), NonFiniteState
+//   conditions.h  a scene's boundary conditions on named places of the mesh, per unit load factor
+//   lefm.h      Williams near-tip fields (PD driving data, interaction integral, exact solutions)
+//   csv.h       the CSV writer (flushed row by row)
+//   pvd.h       the ParaView series index (.pvd)
+#pragma once
+
+#include "body.h"
+#include "conditions.h"
+#include "csv.h"
+#include "error.h"
+#include "geometry.h"
+#include "lefm.h"
+#include "pvd.h"

@@ -1,0 +1,126 @@
+#include "exchange.h"
+
+#include <chrono>
+#include <iomanip>
+#include <limits>
+#include <ostream>
+
+#include "integrators.h"
+
+namespace pumpd::coupling
+{
+  using Clock = std::chrono::steady_clock;
+
+  namespace
+  {
+    double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
+  } // namespace
+
+  const char *to_text(ExchangeController::Decision d)
+  {
+    switch (d)
+      {
+        case ExchangeController::Decision::raise:
+          return "raise";
+        case ExchangeController::Decision::repeat:
+          return "repeat";
+        case ExchangeController::Decision::accept:
+          return "accept";
+        case ExchangeController::Decision::truncate:
+          return "truncate";
+        case ExchangeController::Decision::too_small:
+          return "too-small";
+      }
+    return "";
+  }
+
+  DamageField damage_field(const local::PdModel &model, const local::State &s)
+  {
+    const auto &lattice = model.lattice();
+    const auto  damage  = model.damage(s);
+    DamageField field;
+    field.origin  = lattice.position(lattice.index(0, 0));
+    field.spacing = lattice.spacing();
+    field.nx      = lattice.nx();
+    field.ny      = lattice.ny();
+    field.values.assign(field.nx * field.ny, std::numeric_limits<double>::quiet_NaN());
+    for (std::size_t i : model.nodes())
+      field.values[lattice.row(i) * field.nx + lattice.column(i)] = damage[i];
+    return field;
+  }
+
+  ExchangeOutcome run_exchange(const local::PdModel &model, const BoundaryTransfer &transfer,
+                               ExchangeController &controller, const TipState &tip, double allowed,
+                               const std::function<bool(const geometry::Polyline &)> &arrives,
+                               const PeridynamicsSettings &pd, std::ostream &out)
+  {
+    ExtractionSettings extraction;
+    extraction.threshold = pd.crack_damage;
+    extraction.horizon   = pd.horizon;
+    local::BoundaryLayer           layer(model);
+    const local::DynamicRelaxation relax(model, pd.tolerance, pd.max_iterations);
+    const double                   lambda_c = tip.critical_load_factor;
+
+    ExchangeOutcome r;
+    local::State   &s      = r.state;
+    s                      = model.initial_state();
+    double          lambda = controller.start();
+    transfer.start(lambda * lambda_c, s);
+    local::State saved        = s;
+    double       saved_lambda = lambda, state_lambda = lambda;
+    for (;;)
+      {
+        auto t = Clock::now();
+        // Start from the last equilibrium scaled to the new load (exact while the box is elastic).
+        for (std::size_t i : model.nodes())
+          {
+            s.ux[i] *= lambda / state_lambda;
+            s.uy[i] *= lambda / state_lambda;
+          }
+        transfer.apply(lambda * lambda_c, layer);
+        layer.apply(s, 1.);
+        const auto relaxed = relax.solve(s);
+        local::check_finite(model, s);
+        state_lambda = lambda;
+        r.iterations += relaxed.iterations;
+        ++r.states;
+        r.node_steps += double(relaxed.iterations) * double(model.nodes().size());
+        r.seconds_pd += seconds_since(t);
+
+        t = Clock::now();
+        try
+          {
+            r.increment = extract_crack(damage_field(model, s), tip.position, tip.direction, extraction);
+          }
+        catch (const CrackBranching &e)
+          {
+            r.branching = e.what();
+          }
+        r.seconds_extraction += seconds_since(t);
+        if (!r.branching.empty())
+          break;
+        const bool reaches = r.increment.path.size() > 1 && arrives(r.increment.path);
+        r.decision         = controller.judge(r.increment.length(), allowed, reaches);
+        out << "    PD at " << std::setprecision(4) << lambda << " lambda_c: " << relaxed.iterations
+            << " DR iterations, advance " << r.increment.length() << " m -> " << to_text(r.decision) << "\n"
+            << std::setprecision(6);
+        if (r.decision == ExchangeController::Decision::raise)
+          {
+            saved        = s;
+            saved_lambda = lambda;
+            lambda       = controller.load_factor();
+          }
+        else if (r.decision == ExchangeController::Decision::repeat)
+          {
+            s            = saved;
+            state_lambda = saved_lambda;
+            lambda       = controller.load_factor();
+            ++r.repeats;
+          }
+        else
+          break;
+      }
+    r.load_factor = lambda;
+    return r;
+  }
+} // namespace pumpd::coupling

@@ -1,0 +1,43 @@
+// The scheme of one global-local exchange (preCICE's CouplingScheme::advance): quasi-static PD
+// states of one box along the load factor, each judged by the ExchangeController (raise the load,
+// repeat a too-long advance with half the increment, accept), the crack increment read off each
+// state's damage (CrackExtractor).
+#pragma once
+
+#include <cstddef>
+#include <functional>
+#include <iosfwd>
+#include <string>
+
+#include "boundary_transfer.h"
+#include "crack_extraction.h"
+#include "exchange_controller.h"
+#include "pd_settings.h"
+
+namespace pumpd::coupling
+{
+  struct ExchangeOutcome
+  {
+    CrackIncrement               increment;
+    ExchangeController::Decision decision = ExchangeController::Decision::raise;
+    std::string                  branching;         ///< the ridge split there (refused); "" otherwise
+    double                       load_factor = 0.;  ///< lambda / lambda_c of the last state
+    local::State                 state;             ///< the last PD state
+    std::size_t                  states = 0, repeats = 0, iterations = 0;
+    double                       node_steps = 0.;   ///< sum of PD nodes x DR iterations
+    double                       seconds_pd = 0., seconds_extraction = 0.;
+  };
+
+  /// Runs the states of one exchange for the tip at critical load factor lambda_c, an advance of
+  /// at most `allowed`; `arrives(path)` says whether an increment reaches a hole or the outline
+  /// (accepted whatever its length). Progress (one line per state) to `out`.
+  ExchangeOutcome run_exchange(const local::PdModel &model, const BoundaryTransfer &transfer,
+                               ExchangeController &controller, const TipState &tip, double allowed,
+                               const std::function<bool(const geometry::Polyline &)> &arrives,
+                               const PeridynamicsSettings &pd, std::ostream &out);
+
+  const char *to_text(ExchangeController::Decision decision);
+
+  /// The PD damage on the lattice (crack extraction's input), NaN where there is no material.
+  DamageField damage_field(const local::PdModel &model, const local::State &s);
+} // namespace pumpd::coupling

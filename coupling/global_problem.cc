@@ -1,0 +1,163 @@
+#include "global_problem.h"
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/grid/tria.h>
+
+#include <cmath>
+#include <limits>
+
+#include "elasticity.h"
+#include "error.h"
+#include "global_conditions.h"
+
+namespace pumpd::coupling
+{
+  namespace Patterns = dealii::Patterns;
+
+  void GlobalSettings::add_parameters(dealii::ParameterHandler &prm)
+  {
+    prm.enter_subsection("Global");
+    prm.add_parameter("Tip enrichment radius", tip_radius,
+                      "Nodes within this distance of a tip carry the branch functions [m]; at least the diameter of "
+                      "the cell at the tip. The interaction integral lies within it.",
+                      Patterns::Double(1e-300));
+    prm.add_parameter("Refinement levels near the tip", refinement_levels,
+                      "Cells near a tip are refined this often (each level halves them); the refinement stays along "
+                      "the path.",
+                      Patterns::Integer(0, 6));
+    prm.add_parameter("Refinement radius", refinement_radius, "Refine the cells within this distance of a tip [m].",
+                      Patterns::Double(1e-300));
+    prm.add_parameter("Linear solver", linear_solver,
+                      "direct: UMFPACK; cg-amg: conjugate gradients with AMG (Trilinos ML, rigid-body modes) on the "
+                      "standard unknowns and a direct solve on the enriched ones, for large meshes.",
+                      Patterns::Selection("direct|cg-amg"));
+    prm.add_parameter("Reference load factor", reference_load_factor,
+                      "The load factor lambda the problem is solved at; every field is then scaled (linear "
+                      "elasticity), so it changes the results in their last bits only.",
+                      Patterns::Double(1e-300));
+    prm.leave_subsection();
+  }
+
+  GlobalProblem::GlobalProblem(const Scene &s, const GlobalSettings &g)
+    : scene(s)
+    , settings(g)
+    , tria(std::make_unique<dealii::Triangulation<2>>())
+  {
+    tria->copy_triangulation(*scene.mesh);
+    global::EnrichmentSettings enrichment;
+    enrichment.tip_radius = settings.tip_radius;
+    problem               = std::make_unique<global::EnrichedElasticity>(
+      *tria,
+      global::ElasticMaterial{scene.material.youngs_modulus, scene.material.poisson_ratio, scene.material.plane_strain},
+      enrichment);
+    global::apply(scene.conditions, *problem, settings.reference_load_factor);
+  }
+
+  GlobalProblem::~GlobalProblem() = default;
+
+  void GlobalProblem::refine_at(const std::vector<geometry::Point> &tips)
+  {
+    for (unsigned int l = 0; l < settings.refinement_levels; ++l)
+      {
+        bool flagged = false;
+        for (const auto &cell : tria->active_cell_iterators())
+          for (const auto &t : tips)
+            if (cell->level() < int(settings.refinement_levels) &&
+                cell->center().distance(dealii::Point<2>(t.x, t.y)) < settings.refinement_radius + 0.5 * cell->diameter())
+              {
+                cell->set_refine_flag();
+                flagged = true;
+              }
+        if (!flagged)
+          return;
+        tria->execute_coarsening_and_refinement();
+      }
+  }
+
+  std::vector<TipState> GlobalProblem::solve(const global::Crack &crack)
+  {
+    std::vector<geometry::Point> tips;
+    for (const auto &t : crack.tips())
+      tips.push_back(t.position);
+    refine_at(tips);
+    history.insert(history.end(), tips.begin(), tips.end());
+    problem->set_crack(crack);
+    problem->setup();
+    problem->assemble();
+    global::SolverSettings solver;
+    if (settings.linear_solver == "cg-amg")
+      solver.type = global::SolverSettings::Type::cg_amg;
+    problem->solve(solver);
+    lambda = settings.reference_load_factor;
+
+    std::vector<TipState> states;
+    const auto            sifs = problem->stress_intensity_factors();
+    for (std::size_t t = 0; t < sifs.size(); ++t)
+      {
+        TipState s;
+        s.position  = crack.tips()[t].position;
+        s.direction = crack.tips()[t].direction;
+        s.k1        = sifs[t].k1 / lambda;
+        s.k2        = sifs[t].k2 / lambda;
+        const double g = (sifs[t].k1 * sifs[t].k1 + sifs[t].k2 * sifs[t].k2) / scene.material.effective_modulus();
+        s.critical_load_factor = s.k1 > 0. ? lambda * std::sqrt(scene.material.fracture_energy / g)
+                                           : std::numeric_limits<double>::infinity();
+        states.push_back(s);
+      }
+    return states;
+  }
+
+  std::vector<geometry::Point> GlobalProblem::displacement_per_unit_load(const std::vector<geometry::Point> &points)
+  {
+    problem->prepare_point_evaluation(points);
+    auto u = problem->evaluate_points();
+    for (auto &x : u)
+      x = {x.x / lambda, x.y / lambda};
+    return u;
+  }
+
+  void GlobalProblem::scale_to(double new_lambda)
+  {
+    problem->scale_solution(new_lambda / lambda);
+    lambda = new_lambda;
+  }
+
+  std::pair<double, double> GlobalProblem::report() const
+  {
+    const auto  &r    = scene.report;
+    const auto   pick = [](geometry::Point v, int c) { return c == 0 ? v.x : v.y; };
+    double       load = lambda, displacement = 0.;
+    if (!r.load_is_lambda)
+      {
+        geometry::Point f;
+        if (r.load_place.kind == conditions::Place::Kind::boundary)
+          f = problem->reaction(r.load_place.id);
+        else
+          for (const auto &x : r.load_place.points)
+            f = f + problem->reaction_at(x);
+        load = r.load_sign * pick(f, r.load_component);
+      }
+    if (r.work_conjugate)
+      displacement = lambda != 0. ? 2. * problem->strain_energy() / lambda : 0.;
+    else
+      {
+        const geometry::Point u = r.displacement_place.kind == conditions::Place::Kind::boundary
+                                    ? problem->mean_displacement(r.displacement_place.id)
+                                    : problem->displacement(r.displacement_place.points.front());
+        displacement = r.displacement_sign * pick(u, r.displacement_component);
+      }
+    return {load, displacement};
+  }
+
+  unsigned int GlobalProblem::n_dofs() const { return problem->n_dofs(); }
+  unsigned int GlobalProblem::n_enriched_dofs() const { return problem->n_enriched_dofs(); }
+  void         GlobalProblem::write_vtu(const std::string &file) const { problem->write_vtu(file); }
+
+  double kink_angle(double k1, double k2)
+  {
+    const double s = k1 + std::sqrt(k1 * k1 + 8. * k2 * k2);
+    if (k2 == 0. || s == 0.)
+      return 0.;
+    return -2. * std::atan(2. * k2 / s);
+  }
+} // namespace pumpd::coupling

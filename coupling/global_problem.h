@@ -1,0 +1,94 @@
+// The global problem of every method that solves the whole body (DESIGN.md, "Data flow of one
+// exchange"): enriched linear elasticity (global/) on a copy of the scene's mesh, refined at the
+// crack tips, under the scene's conditions at a reference load factor lambda_ref. Linear
+// elasticity gives every field per unit load factor, and the load at which a tip reaches G_c
+// follows from one solve:
+//   lambda_c = lambda_ref sqrt(G_c / G_ref),  G_ref = (K_I^2 + K_II^2) / E'  at lambda_ref.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "crack.h"
+#include "geometry.h"
+#include "scene.h"
+
+namespace dealii
+{
+  class ParameterHandler;
+}
+
+namespace pumpd::global
+{
+  class EnrichedElasticity;
+}
+
+namespace pumpd::coupling
+{
+  /// The section `Global` (XFEM), shared by the methods that solve the whole body.
+  struct GlobalSettings
+  {
+    double       tip_radius        = 0.006; ///< branch-function radius [m]
+    unsigned int refinement_levels = 2;     ///< cells near a tip refined this often
+    double       refinement_radius = 0.008; ///< [m] around each tip
+    std::string  linear_solver     = "direct";
+    double       reference_load_factor = 1.; ///< lambda of the solve
+
+
+    void add_parameters(dealii::ParameterHandler &prm);
+  };
+
+  /// A crack tip under the scene's loading.
+  struct TipState
+  {
+    geometry::Point position, direction;
+    double          k1 = 0., k2 = 0.;           ///< [Pa m^1/2] per unit load factor
+    double          critical_load_factor = 0.; ///< lambda_c; infinity where K_I <= 0
+  };
+
+  class GlobalProblem
+  {
+  public:
+    /// Throws InvalidParameter for a material out of range.
+    GlobalProblem(const Scene &scene, const GlobalSettings &settings);
+    ~GlobalProblem();
+
+    /// Refines the mesh around the crack's tips (it stays refined along the path), sets up the
+    /// enrichment and solves at lambda_ref: the state of every tip (in the crack's tip order).
+    std::vector<TipState> solve(const global::Crack &crack);
+    /// Refines around the given positions as solve() did (a resumed run replays its history).
+    void refine_at(const std::vector<geometry::Point> &tips);
+    /// The positions solve() refined at, in order.
+    const std::vector<geometry::Point> &refined_at() const { return history; }
+
+    /// Displacement per unit load factor at the points, each on its own side of the crack (one
+    /// batched point evaluation). Call after solve() and before scale_to().
+    std::vector<geometry::Point> displacement_per_unit_load(const std::vector<geometry::Point> &points);
+
+    /// The solution at load factor lambda from here on (until the next solve).
+    void scale_to(double lambda);
+    double load_factor() const { return lambda; }
+    /// Load and displacement of the scene's report at the current load factor.
+    std::pair<double, double> report() const;
+
+    unsigned int n_dofs() const;
+    unsigned int n_enriched_dofs() const;
+    void         write_vtu(const std::string &file) const;
+    const global::EnrichedElasticity &elasticity() const { return *problem; }
+
+  private:
+    const Scene                                  &scene;
+    GlobalSettings                                settings;
+    std::unique_ptr<dealii::Triangulation<2, 2>>  tria;
+    std::unique_ptr<global::EnrichedElasticity>   problem;
+    std::vector<geometry::Point>                  history;
+    double                                        lambda = 1.;
+  };
+
+  /// theta_c of the maximum hoop stress criterion (Erdogan & Sih 1963) [rad], in (-pi, pi); 0
+  /// when K_II = 0. Evaluated as -2 atan(2 K_II / (K_I + sqrt(K_I^2 + 8 K_II^2))), the textbook
+  /// 2 atan((K_I - sqrt(K_I^2 + 8 K_II^2)) / (4 K_II)) without its cancellation for small K_II.
+  double kink_angle(double k1, double k2);
+} // namespace pumpd::coupling

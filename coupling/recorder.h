@@ -1,0 +1,47 @@
+// What a run writes for people (DESIGN.md, "Output of a run"), the same for every method:
+//   body.csv               the body's curves and the named points of its conditions (for plots)
+//   reference_path.csv     the scene's reference path, if any
+//   crack_path.csv         the crack, rewritten at every step
+//   load_displacement.csv  the scene's reported load and displacement per accepted step
+//   global.pvd + global_NNN.vtu, pd.pvd + pd_NNN.vtu   ParaView series
+//   <table>.csv            the method's own table (load_steps.csv), row by row
+// Without an output directory nothing is written.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "csv.h"
+#include "model.h"
+#include "pvd.h"
+#include "scene.h"
+
+namespace pumpd::coupling
+{
+  class GlobalProblem;
+
+  class Recorder
+  {
+  public:
+    /// Creates the scene's output directory and writes body.csv and reference_path.csv;
+    /// `resume` appends to the tables of an interrupted run instead of starting them anew.
+    Recorder(const Scene &scene, bool resume = false);
+
+    bool        writes() const { return !directory.empty(); }
+    std::string path(const std::string &file) const { return directory + "/" + file; }
+    /// A table of the method's own, appended to when resuming.
+    CsvFile table(const std::string &file, const std::string &header) const;
+
+    void crack_path(const geometry::Polyline &crack) const;
+    void load_displacement(std::size_t step, double lambda, double load, double displacement, double crack_length,
+                           geometry::Point tip);
+    void global_state(const GlobalProblem &global, double time);
+    void pd_state(const local::PdModel &model, const local::State &s);
+
+  private:
+    std::string                directory;
+    bool                       resume;
+    CsvFile                    loads;
+    std::unique_ptr<PvdSeries> global_series, pd_series;
+  };
+} // namespace pumpd::coupling

@@ -1,0 +1,653 @@
+#include "scene.h"
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/grid_tools_cache.h>
+#include <deal.II/grid/tria.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "crack.h"
+#include "error.h"
+#include "mesh.h"
+
+namespace pumpd::coupling
+{
+  using geometry::Point;
+  using dealii::ParameterHandler;
+  namespace Patterns = dealii::Patterns;
+
+  double Material::effective_modulus() const
+  {
+    return plane_strain ? youngs_modulus / (1. - poisson_ratio * poisson_ratio) : youngs_modulus;
+  }
+
+  double Material::critical_sif() const { return std::sqrt(effective_modulus() * fracture_energy); }
+
+  const geometry::Polyline &Scene::crack() const
+  {
+    if (cracks.size() != 1)
+      throw InvalidParameter("Initial cracks", std::to_string(cracks.size()) + " cracks",
+                             "this method grows exactly one crack (several cracks come in a later version)");
+    return cracks.front();
+  }
+
+  std::string to_text(Point p)
+  {
+    std::ostringstream s;
+    s << "(" << p.x << ", " << p.y << ")";
+    return s.str();
+  }
+
+  std::string to_text(const geometry::Polyline &line)
+  {
+    std::ostringstream s;
+    for (std::size_t k = 0; k < line.size(); ++k)
+      s << (k == 0 ? "" : "; ") << line[k].x << "," << line[k].y;
+    return s.str();
+  }
+
+  void SceneSettings::add_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Scene");
+    prm.add_parameter("Mesh file", mesh_file,
+                      "The specimen's mesh: a gmsh .geo (meshed by gmsh into quadrilaterals) or .msh (all "
+                      "quadrilaterals). Its physical names (Physical Curve, Point, Surface) name the places the "
+                      "boundary conditions and the report refer to; its boundary is the body (outline and holes). "
+                      "Relative paths start at the current directory.",
+                      Patterns::FileName());
+    prm.add_parameter("Mesh size", mesh_size,
+                      "h passed to gmsh for a .geo (-setnumber h) [m]; 0: the file's default.", Patterns::Double(0., 1.));
+    prm.add_parameter("Maximum cells", max_cells,
+                      "A .geo whose mesh would have more cells (estimated before gmsh runs as its bounding box area / "
+                      "Mesh size^2), or a mesh that has more, is refused.",
+                      Patterns::Double(1., 1e8));
+    prm.add_parameter("Initial cracks", initial_cracks,
+                      "Crack polylines \"x1,y1; x2,y2; ...\" [m], several separated by |. An end on the outline or on "
+                      "a hole's rim is a mouth, every other end a tip; vertices inside the body, segments crossing "
+                      "neither the outline nor a hole. Empty: no crack.",
+                      Patterns::Anything());
+    prm.add_parameter("Output directory", output_directory,
+                      "Where the results go (created if missing).", Patterns::DirectoryName());
+    prm.add_parameter("Reference path", reference_path,
+                      "Optional CSV of a path to compare with (x,y [m] per line, # comments): copied to "
+                      "reference_path.csv, distances printed. Empty: none.",
+                      Patterns::Anything());
+
+    prm.enter_subsection("Material");
+    prm.add_parameter("Young's modulus", material.youngs_modulus, "E [Pa].", Patterns::Double(1e-300));
+    prm.add_parameter("Poisson's ratio", material.poisson_ratio,
+                      "nu. The methods with peridynamics need bond-based PD's value: 1/4 in plane strain, 1/3 in "
+                      "plane stress.",
+                      Patterns::Double(0., 0.4999));
+    prm.add_parameter("Fracture energy", material.fracture_energy, "Critical energy release rate G_c [J/m^2].",
+                      Patterns::Double(1e-300));
+    prm.add_parameter("Density", material.density, "rho [kg/m^3].", Patterns::Double(1e-300));
+    prm.add_parameter("Plane strain", material.plane_strain, "true: plane strain; false: plane stress.", Patterns::Bool());
+    prm.leave_subsection();
+
+    prm.enter_subsection("Boundary conditions");
+    prm.add_parameter("Displacement", displacement,
+                      "\"<place>: ux = <f>, uy = <f>; ...\": prescribed displacement components [m] on a named "
+                      "boundary, point or region (a component not given is free). <f> is an expression of x, y and "
+                      "the load factor lambda (deal.II FunctionParser; pi is known), linear in lambda.",
+                      Patterns::Anything());
+    prm.add_parameter("Traction", traction,
+                      "\"<boundary>: tx = <f>, ty = <f>, p = <f>; ...\": traction [Pa] on a named boundary, t = (tx, "
+                      "ty) - p n with n the outward normal (p > 0 presses on the body: a bearing pressure), linear "
+                      "in lambda.",
+                      Patterns::Anything());
+    prm.add_parameter("Point force", point_force,
+                      "\"<point>: fx = <f>, fy = <f>; ...\": force [N per m of thickness] on a named point, linear "
+                      "in lambda.",
+                      Patterns::Anything());
+    prm.leave_subsection();
+
+    prm.enter_subsection("Report");
+    prm.add_parameter("Load", report_load,
+                      "The load of load_displacement.csv: lambda, or \"<place>: fx\" (or fy, -fx, -fy): the reaction "
+                      "force on a named boundary or point that holds a displacement condition [N/m].",
+                      Patterns::Anything());
+    prm.add_parameter("Displacement", report_displacement,
+                      "The displacement of load_displacement.csv: \"<place>: ux\" (or uy, -ux, -uy): at a named "
+                      "point, or the mean over a named boundary [m]; empty: 2 U / lambda (U the strain energy), the "
+                      "displacement work-conjugate to lambda when lambda scales forces.",
+                      Patterns::Anything());
+    prm.leave_subsection();
+    prm.leave_subsection();
+  }
+
+  namespace
+  {
+    constexpr double pi = 3.14159265358979323846;
+
+    std::string trim(const std::string &s)
+    {
+      const auto a = s.find_first_not_of(" \t\n\r"), b = s.find_last_not_of(" \t\n\r");
+      return a == std::string::npos ? "" : s.substr(a, b - a + 1);
+    }
+
+    /// Splits at `separator` outside parentheses.
+    std::vector<std::string> split_outside_parentheses(const std::string &text, char separator)
+    {
+      std::vector<std::string> parts(1);
+      int                      depth = 0;
+      for (const char c : text)
+        {
+          depth += c == '(' ? 1 : c == ')' ? -1 : 0;
+          if (c == separator && depth == 0)
+            parts.emplace_back();
+          else
+            parts.back() += c;
+        }
+      return parts;
+    }
+
+    std::string one_line(const std::string &text)
+    {
+      std::istringstream in(text);
+      std::string        word, line;
+      while (in >> word)
+        line += (line.empty() ? "" : " ") + word;
+      return line;
+    }
+
+    /// f(x, y, lambda) of an expression; InvalidParameter(entry, ...) if it does not parse.
+    std::function<double(Point, double)> compile(const std::string &expression, const std::string &entry)
+    {
+      auto f = std::make_shared<dealii::FunctionParser<2>>(1);
+      try
+        {
+          f->initialize("x,y,lambda", expression, {{"pi", pi}}, true);
+          f->set_time(1.);
+          f->value(dealii::Point<2>(0., 0.));
+        }
+      catch (const std::exception &e)
+        {
+          throw InvalidParameter(entry, expression,
+                                 "not an expression of x, y and lambda (" + one_line(e.what()).substr(0, 200) + ")");
+        }
+      return [f](Point x, double lambda) {
+        f->set_time(lambda);
+        return f->value(dealii::Point<2>(x.x, x.y));
+      };
+    }
+
+    /// Point location in a mesh that stays alive as long as the locator (the cache goes first).
+    struct Locator
+    {
+      std::shared_ptr<const dealii::Triangulation<2>>  tria;
+      std::unique_ptr<dealii::GridTools::Cache<2>>     cache;
+      explicit Locator(std::shared_ptr<const dealii::Triangulation<2>> t)
+        : tria(std::move(t))
+        , cache(std::make_unique<dealii::GridTools::Cache<2>>(*tria))
+      {}
+      ~Locator() { cache.reset(); }
+    };
+
+    /// The named places of the mesh.
+    class Places
+    {
+    public:
+      Places(std::shared_ptr<const dealii::Triangulation<2>> t, global::MeshNames n)
+        : tria(*t)
+        , names(std::move(n))
+        , locator(std::make_shared<Locator>(std::move(t)))
+      {}
+
+      conditions::Place find(const std::string &entry, const std::string &text, const std::string &name,
+                             std::set<conditions::Place::Kind> allowed) const
+      {
+        using Kind = conditions::Place::Kind;
+        conditions::Place place;
+        place.name = name;
+        if (const auto b = names.boundaries.find(name); b != names.boundaries.end() && allowed.count(Kind::boundary))
+          {
+            place.kind = Kind::boundary;
+            place.id   = b->second;
+            for (const auto &cell : tria.active_cell_iterators())
+              for (const auto &face : cell->face_iterators())
+                if (face->at_boundary() && face->boundary_id() == place.id)
+                  place.edges.push_back({{Point{face->vertex(0)[0], face->vertex(0)[1]},
+                                          Point{face->vertex(1)[0], face->vertex(1)[1]}}});
+            if (place.edges.empty())
+              throw InvalidParameter(entry, text, "the curve \"" + name + "\" holds no boundary face of the mesh");
+            for (const auto &e : place.edges)
+              place.points.insert(place.points.end(), e.begin(), e.end());
+          }
+        else if (const auto p = names.points.find(name); p != names.points.end() && allowed.count(Kind::point))
+          {
+            place.kind   = Kind::point;
+            place.points = p->second;
+          }
+        else if (const auto r = names.regions.find(name); r != names.regions.end() && allowed.count(Kind::region))
+          {
+            place.kind = Kind::region;
+            place.id   = r->second;
+            for (const auto &cell : tria.active_cell_iterators())
+              if (cell->material_id() == place.id)
+                for (const auto v : cell->vertex_indices())
+                  place.points.push_back({cell->vertex(v)[0], cell->vertex(v)[1]});
+            const auto id = place.id;
+            place.inside  = [l = locator, id](Point x) {
+              const auto found = dealii::GridTools::find_active_cell_around_point(*l->cache, dealii::Point<2>(x.x, x.y));
+              return found.first.state() == dealii::IteratorState::valid && found.first->material_id() == id;
+            };
+          }
+        else
+          throw InvalidParameter(entry, text, "the mesh has no " + kinds(allowed) + " named \"" + name + "\" (it names " + listing() + ")");
+        std::sort(place.points.begin(), place.points.end(),
+                  [](Point a, Point b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+        place.points.erase(std::unique(place.points.begin(), place.points.end(),
+                                       [](Point a, Point b) { return a.x == b.x && a.y == b.y; }),
+                           place.points.end());
+        place.box = {place.points.front().x, place.points.front().y, place.points.front().x, place.points.front().y};
+        for (const auto &x : place.points)
+          place.box = {std::min(place.box.x_min, x.x), std::min(place.box.y_min, x.y), std::max(place.box.x_max, x.x),
+                       std::max(place.box.y_max, x.y)};
+        return place;
+      }
+
+    private:
+      static std::string kinds(const std::set<conditions::Place::Kind> &allowed)
+      {
+        std::string s;
+        for (const auto k : allowed)
+          s += (s.empty() ? "" : " or ") + std::string(k == conditions::Place::Kind::boundary ? "boundary (Physical Curve)"
+                                                       : k == conditions::Place::Kind::point  ? "point (Physical Point)"
+                                                                                               : "region (Physical Surface)");
+        return s;
+      }
+
+      std::string listing() const
+      {
+        std::string s;
+        for (const auto &[n, id] : names.boundaries)
+          s += (s.empty() ? "" : ", ") + n + " (boundary)";
+        for (const auto &[n, p] : names.points)
+          s += (s.empty() ? "" : ", ") + n + " (point)";
+        for (const auto &[n, id] : names.regions)
+          s += (s.empty() ? "" : ", ") + n + " (region)";
+        return s.empty() ? "nothing: add physical names to the .geo" : s;
+      }
+
+      const dealii::Triangulation<2> &tria;
+      global::MeshNames               names;
+      std::shared_ptr<Locator>        locator;
+    };
+
+    /// One condition of an entry: its place and its "name = expression" assignments.
+    struct Parsed
+    {
+      std::string                        text, place;
+      std::map<std::string, std::string> values;
+    };
+
+    std::vector<Parsed> parse_entry(const std::string &entry, const std::string &text,
+                                    const std::set<std::string> &variables)
+    {
+      std::vector<Parsed> out;
+      if (trim(text).empty())
+        return out;
+      std::string allowed;
+      for (const auto &v : variables)
+        allowed += (allowed.empty() ? "" : ", ") + v;
+      for (const auto &item : split_outside_parentheses(text, ';'))
+        {
+          Parsed p;
+          p.text           = trim(item);
+          const auto colon = p.text.find(':');
+          if (p.text.empty())
+            throw InvalidParameter(entry, text, "an empty condition between two ';'");
+          if (colon == std::string::npos || trim(p.text.substr(0, colon)).empty())
+            throw InvalidParameter(entry, p.text, "a condition names its place first: \"<name>: " + *variables.begin() + " = ...\"");
+          p.place = trim(p.text.substr(0, colon));
+          for (const auto &assignment : split_outside_parentheses(p.text.substr(colon + 1), ','))
+            {
+              const auto eq = assignment.find('=');
+              const auto variable = trim(assignment.substr(0, eq));
+              if (eq == std::string::npos || !variables.count(variable) || trim(assignment.substr(eq + 1)).empty())
+                throw InvalidParameter(entry, p.text, "\"" + trim(assignment) + "\" must be \"<v> = <expression>\" with <v> one of " + allowed);
+              if (p.values.count(variable))
+                throw InvalidParameter(entry, p.text, variable + " is given twice");
+              p.values[variable] = trim(assignment.substr(eq + 1));
+            }
+          out.push_back(p);
+        }
+      return out;
+    }
+
+    /// The field per unit lambda of an expression, checked to be linear in lambda at the points.
+    conditions::Field linear_field(const std::string &entry, const Parsed &p, const std::string &variable,
+                                   const std::vector<Point> &points)
+    {
+      const auto f = compile(p.values.at(variable), entry);
+      for (const auto &x : points)
+        {
+          const double f0 = f(x, 0.), f1 = f(x, 1.), f2 = f(x, 2.);
+          const double scale = std::max({std::abs(f1), std::abs(f2), 1e-300});
+          if (!std::isfinite(f0) || !std::isfinite(f1) || !std::isfinite(f2))
+            throw InvalidParameter(entry, p.text, variable + " is not finite at " + to_text(x));
+          if (std::abs(f0) > 1e-12 * scale || std::abs(f2 - 2. * f1) > 1e-9 * scale)
+            throw InvalidParameter(entry, p.text,
+                                   variable + " must be proportional to the load factor lambda (0 at lambda = 0, "
+                                              "linear in it): the methods scale the whole loading with lambda; at " +
+                                     to_text(x) + " it is " + std::to_string(f0) + " at lambda = 0");
+        }
+      return [f](Point x) { return f(x, 1.); };
+    }
+
+    void read_conditions(const SceneSettings &s, const Places &places, conditions::Conditions &out)
+    {
+      using Kind = conditions::Place::Kind;
+      for (const auto &p : parse_entry("Displacement", s.displacement, {"ux", "uy"}))
+        {
+          conditions::Displacement d;
+          d.place = places.find("Displacement", p.text, p.place, {Kind::boundary, Kind::point, Kind::region});
+          if (p.values.count("ux"))
+            d.ux = linear_field("Displacement", p, "ux", d.place.points);
+          if (p.values.count("uy"))
+            d.uy = linear_field("Displacement", p, "uy", d.place.points);
+          if (p.values.empty())
+            throw InvalidParameter("Displacement", p.text, "names no component: give ux, uy or both");
+          out.displacements.push_back(d);
+        }
+      for (const auto &p : parse_entry("Traction", s.traction, {"tx", "ty", "p"}))
+        {
+          conditions::Traction t;
+          t.place = places.find("Traction", p.text, p.place, {Kind::boundary});
+          if (p.values.empty())
+            throw InvalidParameter("Traction", p.text, "names no component: give tx, ty or p");
+          const auto zero = [](Point) { return 0.; };
+          t.tx = p.values.count("tx") ? linear_field("Traction", p, "tx", t.place.points) : zero;
+          t.ty = p.values.count("ty") ? linear_field("Traction", p, "ty", t.place.points) : zero;
+          t.p  = p.values.count("p") ? linear_field("Traction", p, "p", t.place.points) : zero;
+          out.tractions.push_back(t);
+        }
+      for (const auto &p : parse_entry("Point force", s.point_force, {"fx", "fy"}))
+        {
+          conditions::PointForce f;
+          f.place = places.find("Point force", p.text, p.place, {Kind::point});
+          if (p.values.empty())
+            throw InvalidParameter("Point force", p.text, "names no component: give fx, fy or both");
+          const Point x = f.place.points.front();
+          f.force = {p.values.count("fx") ? linear_field("Point force", p, "fx", {x})(x) : 0.,
+                     p.values.count("fy") ? linear_field("Point force", p, "fy", {x})(x) : 0.};
+          out.forces.push_back(f);
+        }
+      if (out.tractions.empty() && out.forces.empty() &&
+          std::none_of(out.displacements.begin(), out.displacements.end(), [](const conditions::Displacement &d) {
+            return std::any_of(d.place.points.begin(), d.place.points.end(), [&](Point x) {
+              return (d.ux && (*d.ux)(x) != 0.) || (d.uy && (*d.uy)(x) != 0.);
+            });
+          }))
+        throw InvalidParameter("Boundary conditions", "no load",
+                               "nothing loads the body: give a Traction, a Point force or a Displacement that lambda "
+                               "scales (nonzero at lambda = 1)");
+    }
+
+    /// Two displacement conditions prescribing different values of one component at one vertex,
+    /// or a point force on a prescribed component.
+    void check_conflicts(const conditions::Conditions &c)
+    {
+      std::map<std::pair<double, double>, std::array<std::pair<std::string, double>, 2>> fixed;
+      const auto add = [&](const Point &x, int component, const std::string &name, double value) {
+        auto &slot = fixed[{x.x, x.y}][component];
+        if (slot.first.empty())
+          slot = {name, value};
+        else if (std::abs(slot.second - value) > 1e-12 * std::max(std::abs(slot.second), std::abs(value)))
+          throw InvalidParameter("Displacement", slot.first + " and " + name,
+                                 "both prescribe u" + std::string(component == 0 ? "x" : "y") + " at the vertex " +
+                                   to_text(x) + " with different values (" + std::to_string(slot.second) + " and " +
+                                   std::to_string(value) + " at lambda = 1): one vertex takes one value");
+      };
+      for (const auto &d : c.displacements)
+        for (const auto &x : d.place.points)
+          {
+            if (d.ux)
+              add(x, 0, d.place.name, (*d.ux)(x));
+            if (d.uy)
+              add(x, 1, d.place.name, (*d.uy)(x));
+          }
+      for (const auto &f : c.forces)
+        for (const auto &x : f.place.points)
+          if (const auto it = fixed.find({x.x, x.y}); it != fixed.end())
+            for (int k = 0; k < 2; ++k)
+              if (!it->second[k].first.empty() && (k == 0 ? f.force.x : f.force.y) != 0.)
+                throw InvalidParameter("Point force", f.place.name,
+                                       "acts on u" + std::string(k == 0 ? "x" : "y") + " at " + to_text(x) +
+                                         ", which the displacement condition on " + it->second[k].first +
+                                         " prescribes: a prescribed component takes no force");
+    }
+
+    /// Rigid motions (a, b, theta): u = (a - theta (y - y0), b + theta (x - x0)) that every
+    /// prescribed component allows; refused naming them (the body would float).
+    void check_rigid_motion(const conditions::Conditions &c, const geometry::Body &body)
+    {
+      const geometry::Box box   = body.bounding_box();
+      const Point         o     = {0.5 * (box.x_min + box.x_max), 0.5 * (box.y_min + box.y_max)};
+      const double        scale = std::max(box.width(), box.height());
+      double              M[3][3] = {};
+      const auto          row = [&](double r0, double r1, double r2) {
+        const double r[3] = {r0, r1, r2};
+        for (int i = 0; i < 3; ++i)
+          for (int j = 0; j < 3; ++j)
+            M[i][j] += r[i] * r[j];
+      };
+      for (const auto &d : c.displacements)
+        for (const auto &x : d.place.points)
+          {
+            const double X = (x.x - o.x) / scale, Y = (x.y - o.y) / scale;
+            if (d.ux)
+              row(1., 0., -Y);
+            if (d.uy)
+              row(0., 1., X);
+          }
+      // Eigenvectors of the symmetric 3 x 3 M by Jacobi rotations; a zero eigenvalue is a free motion.
+      double V[3][3] = {{1., 0., 0.}, {0., 1., 0.}, {0., 0., 1.}};
+      for (int sweep = 0; sweep < 50; ++sweep)
+        for (int p = 0; p < 3; ++p)
+          for (int q = p + 1; q < 3; ++q)
+            {
+              if (std::abs(M[p][q]) < 1e-300)
+                continue;
+              const double theta = 0.5 * std::atan2(2. * M[p][q], M[q][q] - M[p][p]);
+              const double cs = std::cos(theta), sn = std::sin(theta);
+              for (int k = 0; k < 3; ++k)
+                {
+                  const double mkp = M[k][p], mkq = M[k][q];
+                  M[k][p] = cs * mkp - sn * mkq;
+                  M[k][q] = sn * mkp + cs * mkq;
+                }
+              for (int k = 0; k < 3; ++k)
+                {
+                  const double mpk = M[p][k], mqk = M[q][k];
+                  M[p][k] = cs * mpk - sn * mqk;
+                  M[q][k] = sn * mpk + cs * mqk;
+                }
+              for (int k = 0; k < 3; ++k)
+                {
+                  const double vkp = V[k][p], vkq = V[k][q];
+                  V[k][p] = cs * vkp - sn * vkq;
+                  V[k][q] = sn * vkp + cs * vkq;
+                }
+            }
+      const double largest = std::max({M[0][0], M[1][1], M[2][2], 1e-300});
+      std::string  free;
+      for (int k = 0; k < 3; ++k)
+        if (M[k][k] <= 1e-10 * largest || M[k][k] <= 0.)
+          {
+            const double a = V[0][k], b = V[1][k], t = V[2][k];
+            std::ostringstream s;
+            s << std::setprecision(4);
+            if (std::abs(t) < 1e-6)
+              s << "translation along (" << a / std::hypot(a, b) << ", " << b / std::hypot(a, b) << ")";
+            else
+              s << "rotation about " << to_text(Point{o.x - scale * b / t, o.y + scale * a / t});
+            free += (free.empty() ? "" : ", ") + s.str();
+          }
+      if (!free.empty())
+        throw InvalidParameter("Displacement", c.displacements.empty() ? "(none)" : "the displacement conditions",
+                               "the body is not held against rigid motion, free: " + free +
+                                 "; prescribe more components (e.g. ux and uy at one point and uy at another)");
+    }
+
+    std::vector<geometry::Polyline> read_cracks(const std::string &text, const geometry::Body &body,
+                                                const dealii::Triangulation<2> &tria, double tolerance)
+    {
+      std::vector<geometry::Polyline> cracks;
+      if (trim(text).empty())
+        return cracks;
+      for (const auto &line : split_outside_parentheses(text, '|'))
+        {
+          geometry::Polyline crack;
+          for (const auto &point : split_outside_parentheses(line, ';'))
+            {
+              double x = 0., y = 0.;
+              char   rest = 0;
+              if (std::sscanf(point.c_str(), " %lf , %lf %c", &x, &y, &rest) != 2)
+                throw InvalidParameter("Initial cracks", trim(line), "\"" + trim(point) + "\" is not a point x,y");
+              crack.push_back({x, y});
+            }
+          if (crack.size() < 2)
+            throw InvalidParameter("Initial cracks", trim(line), "a crack needs at least 2 points");
+          try
+            {
+              global::Crack(crack, body, tolerance);
+            }
+          catch (const InvalidParameter &e)
+            {
+              throw InvalidParameter("Initial cracks", trim(line), e.what());
+            }
+          // An end off the boundary by less than half the cell it lies in was meant as a mouth.
+          for (const Point end : {crack.front(), crack.back()})
+            {
+              const double d = body.clearance(end);
+              if (d <= tolerance)
+                continue;
+              const auto cell =
+                dealii::GridTools::find_active_cell_around_point(tria, dealii::Point<2>(end.x, end.y));
+              if (cell.state() == dealii::IteratorState::valid && d < 0.5 * cell->diameter())
+                throw InvalidParameter("Initial cracks", trim(line),
+                                       "the end " + to_text(end) + " is " + std::to_string(d) +
+                                         " m from the boundary: a mouth must lie on the outline or a hole's rim "
+                                         "(within " + std::to_string(tolerance) + " m), a tip at least half a cell (" +
+                                         std::to_string(0.5 * cell->diameter()) + " m) from it");
+            }
+          cracks.push_back(crack);
+        }
+      for (std::size_t a = 0; a < cracks.size(); ++a)
+        for (std::size_t b = a + 1; b < cracks.size(); ++b)
+          for (std::size_t s = 0; s + 1 < cracks[a].size(); ++s)
+            if (geometry::segment_crosses_polyline(cracks[a][s], cracks[a][s + 1], cracks[b]))
+              throw InvalidParameter("Initial cracks", to_text(cracks[a]) + " | " + to_text(cracks[b]),
+                                     "two cracks touch or cross: give them as one polyline");
+      return cracks;
+    }
+
+    /// "<place>: <sign><component>", the component one of `components`.
+    void parse_report(const std::string &entry, const std::string &text, const Places &places,
+                      const std::array<std::string, 2> &components, conditions::Place &place, int &component,
+                      double &sign)
+    {
+      const auto colon = text.find(':');
+      std::string c    = colon == std::string::npos ? "" : trim(text.substr(colon + 1));
+      sign             = 1.;
+      if (!c.empty() && c[0] == '-')
+        sign = -1., c = trim(c.substr(1));
+      if (colon == std::string::npos || (c != components[0] && c != components[1]))
+        throw InvalidParameter(entry, text,
+                               "must be \"<name>: " + components[0] + "\" (or " + components[1] + ", with an optional -)");
+      component = c == components[0] ? 0 : 1;
+      place     = places.find(entry, text, trim(text.substr(0, colon)),
+                              {conditions::Place::Kind::boundary, conditions::Place::Kind::point});
+    }
+  } // namespace
+
+  Scene build_scene(const SceneSettings &s)
+  {
+    Scene scene;
+    scene.mesh_file        = s.mesh_file;
+    scene.material         = s.material;
+    scene.output_directory = s.output_directory;
+    if (!s.reference_path.empty())
+      scene.reference_path = read_path(s.reference_path);
+    if (s.mesh_file.empty())
+      throw InvalidParameter("Mesh file", "(empty)", "a scene needs a mesh: a gmsh .geo or .msh file");
+
+    auto tria  = std::make_shared<dealii::Triangulation<2>>();
+    auto names = global::read_mesh(s.mesh_file, *tria, s.mesh_size, s.max_cells);
+    scene.body = global::body_of(*tria);
+    scene.mesh = tria;
+    const Places places(tria, std::move(names));
+    read_conditions(s, places, scene.conditions);
+    check_conflicts(scene.conditions);
+    check_rigid_motion(scene.conditions, scene.body);
+    const geometry::Box box = scene.body.bounding_box();
+    scene.cracks            = read_cracks(s.initial_cracks, scene.body, *tria, 1e-8 * std::max(box.width(), box.height()));
+
+    if (trim(s.report_load) != "lambda")
+      {
+        scene.report.load_is_lambda = false;
+        parse_report("Report load", s.report_load, places, {{"fx", "fy"}}, scene.report.load_place,
+                     scene.report.load_component, scene.report.load_sign);
+        const bool held = std::any_of(scene.conditions.displacements.begin(), scene.conditions.displacements.end(),
+                                      [&](const conditions::Displacement &d) {
+                                        return d.place.name == scene.report.load_place.name &&
+                                               (scene.report.load_component == 0 ? d.ux.has_value() : d.uy.has_value());
+                                      });
+        if (!held)
+          throw InvalidParameter("Report load", s.report_load,
+                                 "a reaction needs a displacement condition on that place and component");
+        scene.report.load_name = trim(s.report_load);
+      }
+    if (!trim(s.report_displacement).empty())
+      {
+        scene.report.work_conjugate = false;
+        parse_report("Report displacement", s.report_displacement, places, {{"ux", "uy"}},
+                     scene.report.displacement_place, scene.report.displacement_component,
+                     scene.report.displacement_sign);
+        scene.report.displacement_name = trim(s.report_displacement);
+      }
+    return scene;
+  }
+
+  geometry::Polyline read_path(const std::string &file)
+  {
+    std::ifstream in(file);
+    if (!in)
+      throw InvalidParameter("Reference path", file, "cannot be opened (relative paths start at the current directory)");
+    geometry::Polyline path;
+    std::string        line;
+    while (std::getline(in, line))
+      {
+        if (line.empty() || line[0] == '#' || std::isalpha(static_cast<unsigned char>(line[0])))
+          continue;
+        Point p;
+        if (std::sscanf(line.c_str(), "%lf,%lf", &p.x, &p.y) != 2)
+          throw InvalidParameter("Reference path", file, "line \"" + line + "\" is not x,y");
+        path.push_back(p);
+      }
+    if (path.size() < 2)
+      throw InvalidParameter("Reference path", file, "needs at least 2 points x,y");
+    return path;
+  }
+
+  void write_path(const std::string &file, const geometry::Polyline &path)
+  {
+    std::ofstream out(file);
+    out << std::setprecision(10) << "x_m,y_m\n";
+    for (const auto &p : path)
+      out << p.x << "," << p.y << "\n";
+  }
+} // namespace pumpd::coupling

@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# run.sh <pumpd> <path_change> <source dir> <scene .prm> <work dir> <reference dir> <metric> <limit mm>
+#        [<file> "<numdiff options>"]...
+# Runs pumpd on the scene (from the source directory: relative paths in a scene start there) with
+# its output directory moved to <work dir>/out, then compares: each <file> of the reference with
+# numdiff and its options; the crack path with path_change, printed as
+# `pumpd-metric <metric> <mean distance in mm>` and failing above <limit mm> (empty: not compared).
+set -u
+pumpd=$1 path_change=$2 source=$3 prm=$4 work=$5 reference=$6 metric=$7 limit=$8
+shift 8
+rm -rf "$work" && mkdir -p "$work"
+sed "s#^\( *set Output directory *=\).*#\1 $work/out#" "$source/$prm" > "$work/scene.prm"
+(cd "$source" && "$pumpd" "$work/scene.prm") > "$work/log" 2>&1
+status=$?
+tail -n 3 "$work/log"
+[ $status -eq 0 ] || { echo "FAIL: pumpd exited with $status"; cat "$work/log"; exit 1; }
+failed=0
+while [ $# -ge 2 ]; do
+  file=$1 options=$2
+  shift 2
+  # shellcheck disable=SC2086
+  if numdiff -q $options "$reference/$file" "$work/out/$file" > /dev/null; then
+    echo "$file: as the reference (numdiff $options)"
+  else
+    echo "FAIL: $file differs from the reference beyond numdiff $options:"
+    # shellcheck disable=SC2086
+    numdiff $options "$reference/$file" "$work/out/$file" | head -n 20
+    failed=1
+  fi
+done
+if [ -n "$limit" ]; then
+  mean=$("$path_change" "$reference/crack_path.csv" "$work/out/crack_path.csv") || { echo "FAIL: path_change"; exit 1; }
+  echo "pumpd-metric $metric $mean"
+  awk -v m="$mean" -v l="$limit" 'BEGIN { exit !(m <= l) }' || { echo "FAIL: the crack path moved by $mean mm (mean), more than $limit mm"; failed=1; }
+fi
+exit $failed
