@@ -23,6 +23,13 @@ namespace pumpd
     using std::runtime_error::runtime_error;
   };
 
+  /// A value for a message: `precision` significant digits (std::to_string prints 5e-9 as 0.000000).
+  std::string to_text(double value, int precision = 6);
+
+  /// One line from an exception text: deal.II's "Additional information" if present, its
+  /// stack trace dropped, whitespace collapsed, at most 300 characters.
+  std::string one_line(const std::string &text);
+
   /// Throws InvalidParameter unless lower < value (and value < upper where given).
   void require_positive(const std::string &name, double value);
   void require_range(const std::string &name, double value, double lower, double upper,

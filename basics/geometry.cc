@@ -3,9 +3,24 @@
 #include <algorithm>
 #include <cmath>
 
+#include "error.h"
+
 namespace pumpd::geometry
 {
   double norm(Point a) { return std::hypot(a.x, a.y); }
+
+  std::string to_text(Point p, int precision)
+  {
+    return "(" + pumpd::to_text(p.x, precision) + ", " + pumpd::to_text(p.y, precision) + ")";
+  }
+
+  std::string to_text(const Polyline &line)
+  {
+    std::string s;
+    for (std::size_t k = 0; k < line.size(); ++k)
+      s += (k == 0 ? "" : "; ") + pumpd::to_text(line[k].x) + "," + pumpd::to_text(line[k].y);
+    return s;
+  }
 
   bool Box::contains(Point p, double tolerance) const
   {

@@ -3,6 +3,7 @@
 // specimen, its outline and holes, is body.h). No peridynamics and no deal.II here.
 #pragma once
 
+#include <string>
 #include <vector>
 
 namespace pumpd::geometry
@@ -22,6 +23,11 @@ namespace pumpd::geometry
 
   /// A polyline crack: vertices in order, the last one is the (growing) tip.
   using Polyline = std::vector<Point>;
+
+  /// "(x, y)" for a message, `precision` significant digits.
+  std::string to_text(Point p, int precision = 6);
+  /// "x0,y0; x1,y1; ...", as a crack is written in a .prm.
+  std::string to_text(const Polyline &line);
 
   struct Circle
   {

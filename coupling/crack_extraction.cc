@@ -15,15 +15,6 @@ namespace pumpd::coupling
   {
     const double nan = std::numeric_limits<double>::quiet_NaN();
 
-    std::string to_text(double v)
-    {
-      std::ostringstream s;
-      s << v;
-      return s.str();
-    }
-
-    std::string to_text(Point p) { return "(" + to_text(p.x) + ", " + to_text(p.y) + ")"; }
-
     Point rotated(Point t, double angle)
     {
       const double c = std::cos(angle), s = std::sin(angle);

@@ -125,27 +125,6 @@ namespace pumpd::coupling
         }
     }
 
-    /// Why the exchange ends the run, from its outcome ("" if it does not); grows the crack by
-    /// the accepted increment (truncated to the allowed advance; arrival at a hole or the outline
-    /// ends it there).
-    std::string grow(global::Crack &crack, const ExchangeOutcome &outcome, double allowed, double max_load_factor,
-                     const std::function<Arrival(const geometry::Polyline &)> &arrival_of, double h)
-    {
-      if (!outcome.branching.empty())
-        return "crack branching in the PD box, refused: " + outcome.branching;
-      if (outcome.decision == Decision::too_small)
-        {
-          std::ostringstream reason;
-          reason << "the load is too small to grow the crack: no growth up to " << max_load_factor << " lambda_c";
-          return reason.str();
-        }
-      const auto arrival = arrival_of(truncate(outcome.increment.path, allowed));
-      for (std::size_t k = 1; k < arrival.path.size(); ++k)
-        if (geometry::norm(arrival.path[k] - crack.vertices().back()) > 1e-3 * h)
-          crack.grow(0, arrival.path[k]);
-      return arrival.reason;
-    }
-
     void print_summary(const GlobalLocalResult &r, const Scene &scene, double h, double reference_box_area,
                        std::ostream &out)
     {
@@ -183,180 +162,288 @@ namespace pumpd::coupling
     }
   } // namespace
 
-  GlobalLocalResult run_global_local(const Scene &scene, const GlobalLocalSettings &s, std::ostream &out)
+  namespace
   {
-    const auto   t0 = Clock::now();
-    const double h  = s.pd.spacing();
-    if (s.cycle.exchange.min_advance < 2. * h)
-      throw InvalidParameter("Minimum advance", std::to_string(s.cycle.exchange.min_advance),
-                             "must be at least two PD spacings (" + std::to_string(2. * h) +
-                               " m): a shorter advance is within the noise of the extracted tip");
-    const local::MaterialParameters material = s.pd.material(scene.material);
-    std::optional<global::Crack>    crack    = one_tip_crack(scene);
-    GlobalProblem                   global(scene, s.global);
-    BoxSettings                     box_settings = s.cycle.box;
-    box_settings.horizon                         = s.pd.horizon;
-    box_settings.spacing                         = h;
-    BoxPolicy          boxes(scene.body, box_settings);
-    ExchangeController controller(s.cycle.exchange);
-    const double       max_length = s.growth.length_limit();
+    /// One run of the cycle: its parts (global problem, box policy, controller, recorder) and
+    /// the steps of an exchange, each a member function; run() is the loop over them.
+    class Cycle
+    {
+    public:
+      Cycle(const Scene &scene, const GlobalLocalSettings &settings, std::ostream &out);
+      GlobalLocalResult run();
 
-    Recorder          recorder(scene, s.cycle.resume);
-    const std::string checkpoint = recorder.writes() ? recorder.path("checkpoint.h5") : "";
-    CycleState        cycle;
-    if (s.cycle.resume)
+    private:
+      /// "" or why no exchange may start: the exchange or crack length limit.
+      std::string limit_reached(std::size_t n) const;
+      /// The global problem: the tip's K and critical load factor; "" or why the run stops.
+      std::string solve_global(ExchangeRecord &record, TipState &tip);
+      /// The box around the tip and the PD body in it (the crack behind the tip as broken bonds).
+      local::PdModel pd_body(const TipState &tip, ExchangeRecord &record);
+      /// The mapping of the global displacement onto the body's nodes.
+      BoundaryTransfer transfer_to(const local::PdModel &model, ExchangeRecord &record);
+      /// The PD states along the load until the crack grows (exchange.h).
+      ExchangeOutcome exchange(const local::PdModel &model, const BoundaryTransfer &transfer, const TipState &tip,
+                               ExchangeRecord &record);
+      /// The accepted increment into the crack; "" or why the run stops (a hole, the outline, ...).
+      std::string grow(const ExchangeOutcome &outcome, ExchangeRecord &record);
+      /// The files for people and the checkpoint; the progress line.
+      void write(const ExchangeRecord &record, const local::PdModel &model, const ExchangeOutcome &outcome,
+                 const std::string &stop);
+      /// The result: path, boxes, distances from the reference path; the summary metrics.
+      GlobalLocalResult finish();
+
+      /// Where a grown path ends: a hole within its margin, or the outline or a hole within a horizon.
+      Arrival arrival_of(const geometry::Polyline &path) const
       {
-        if (checkpoint.empty())
-          throw InvalidParameter("Resume", "true", "needs an output directory holding checkpoint.h5");
-        cycle = read_cycle_checkpoint(checkpoint);
-        crack.emplace(cycle.crack, scene.body, 1e-8 * std::max(scene.body.bounding_box().width(), scene.body.bounding_box().height()));
-        for (const auto &x : cycle.refined_at)
-          global.refine_at({x});
-        boxes.restore(cycle.boxes);
-        controller.restore(cycle.load_factor);
-        out << "resuming after exchange " << cycle.exchanges << ": crack " << crack->length() << " m\n";
+        return arrive(path, scene.body, s.growth.hole_margin, s.pd.horizon, 0, s.pd.horizon);
       }
-    CsvFile steps = recorder.table("load_steps.csv", load_steps_header);
 
-    // Where a grown path ends: a hole within its margin, or the outline or a hole within a horizon.
-    const auto arrival_of = [&](const geometry::Polyline &path) {
-      return arrive(path, scene.body, s.growth.hole_margin, s.pd.horizon, 0, s.pd.horizon);
+      const Scene                    &scene;
+      const GlobalLocalSettings      &s;
+      std::ostream                   &out;
+      const double                    h, max_length;
+      const local::MaterialParameters material;
+      std::optional<global::Crack>    crack;
+      GlobalProblem                   global;
+      BoxPolicy                       boxes;
+      ExchangeController              controller;
+      Recorder                        recorder;
+      std::string                     checkpoint;
+      CycleState                      state;
+      CsvFile                         steps;
+      GlobalLocalResult               result;
+      double                          box_area_sum = 0., length0 = 0.;
+      Clock::time_point               t0 = Clock::now();
     };
-    out << "global-local: " << scene.mesh_file << ", " << scene.body.holes().size() << " holes, initial crack "
-        << crack->length() << " m; PD delta " << s.pd.horizon << " m, m = " << s.pd.horizon_over_spacing << ", box "
-        << box_settings.size << " m; K_c = " << scene.material.critical_sif() << " Pa m^1/2\n";
 
-    GlobalLocalResult result;
-    double            box_area_sum = 0.;
-    const double      length0      = crack->length();
-    for (std::size_t n = cycle.exchanges; !cycle.finished; ++n)
-      {
-        if (n >= s.cycle.max_exchanges)
-          {
-            result.stop_reason = "maximum exchanges";
-            break;
-          }
-        const double length = crack->length();
-        if (length >= max_length - 1e-9)
-          {
-            result.stop_reason = "maximum crack length";
-            break;
-          }
-        ExchangeRecord record;
-        record.exchange     = n;
-        record.crack_length = length;
+    BoxSettings box_settings(const GlobalLocalSettings &s)
+    {
+      BoxSettings b = s.cycle.box;
+      b.horizon     = s.pd.horizon;
+      b.spacing     = s.pd.spacing();
+      return b;
+    }
 
-        // 1. The global problem: the tip's K and critical load factor.
-        auto           t   = Clock::now();
-        const TipState tip = global.solve(*crack).front();
-        record.tip                  = tip.position;
-        record.critical_load_factor = tip.critical_load_factor;
-        record.dofs                 = global.n_dofs();
-        record.enriched_dofs        = global.n_enriched_dofs();
-        if (tip.k1 <= 0.)
-          {
-            result.stop_reason = "the crack closes under the load (K_I <= 0)";
-            break;
-          }
-        record.seconds_global = seconds_since(t);
+    Cycle::Cycle(const Scene &sc, const GlobalLocalSettings &settings, std::ostream &progress)
+      : scene(sc)
+      , s(settings)
+      , out(progress)
+      , h(settings.pd.spacing())
+      , max_length(settings.growth.length_limit())
+      , material(settings.pd.material(sc.material))
+      , crack(one_tip_crack(sc))
+      , global(sc, settings.global)
+      , boxes(sc.body, box_settings(settings))
+      , controller(settings.cycle.exchange)
+      , recorder(sc, settings.cycle.resume)
+      , checkpoint(recorder.writes() ? recorder.path("checkpoint.h5") : "")
+    {
+      if (s.cycle.exchange.min_advance < 2. * h)
+        throw InvalidParameter("Minimum advance", std::to_string(s.cycle.exchange.min_advance),
+                               "must be at least two PD spacings (" + std::to_string(2. * h) +
+                                 " m): a shorter advance is within the noise of the extracted tip");
+      if (s.cycle.resume)
+        {
+          if (checkpoint.empty())
+            throw InvalidParameter("Resume", "true", "needs an output directory holding checkpoint.h5");
+          state = read_cycle_checkpoint(checkpoint);
+          crack.emplace(state.crack, scene.body, 1e-8 * std::max(scene.body.bounding_box().width(), scene.body.bounding_box().height()));
+          for (const auto &x : state.refined_at)
+            global.refine_at({x});
+          boxes.restore(state.boxes);
+          controller.restore(state.load_factor);
+          out << "resuming after exchange " << state.exchanges << ": crack " << crack->length() << " m\n";
+        }
+      steps   = recorder.table("load_steps.csv", load_steps_header);
+      length0 = crack->length();
+      out << "global-local: " << scene.mesh_file << ", " << scene.body.holes().size() << " holes, initial crack "
+          << crack->length() << " m; PD delta " << s.pd.horizon << " m, m = " << s.pd.horizon_over_spacing << ", box "
+          << s.cycle.box.size << " m; K_c = " << scene.material.critical_sif() << " Pa m^1/2\n";
+    }
 
-        // 2. The box, the PD body in it, the mapping of the global displacement onto its nodes.
-        t                       = Clock::now();
-        const geometry::Box box = boxes.place(tip.position, tip.direction);
-        record.box              = box;
-        const local::PdModel   model(material, s.pd.horizon, s.pd.horizon_over_spacing,
-                                     local::Region{scene.body, box, {crack->vertices()}});
-        const BoundaryTransfer transfer(global, model);
-        record.seconds_point_evaluation = seconds_since(t);
-        record.pd_nodes                 = model.nodes().size();
-        box_area_sum += box.width() * box.height();
+    GlobalLocalResult Cycle::run()
+    {
+      for (std::size_t n = state.exchanges; !state.finished; ++n)
+        {
+          ExchangeRecord record;
+          record.exchange     = n;
+          record.crack_length = crack->length();
+          TipState    tip;
+          std::string stop = limit_reached(n);
+          if (stop.empty())
+            stop = solve_global(record, tip);
+          if (!stop.empty())
+            {
+              result.stop_reason = stop;
+              break;
+            }
+          const local::PdModel   model    = pd_body(tip, record);
+          const BoundaryTransfer transfer = transfer_to(model, record);
+          const ExchangeOutcome  outcome  = exchange(model, transfer, tip, record);
+          stop                            = grow(outcome, record);
+          write(record, model, outcome, stop);
+          if (!stop.empty())
+            {
+              result.stop_reason = stop;
+              out << "  stop: " << stop << "\n";
+              break;
+            }
+        }
+      return finish();
+    }
 
-        // 3. The exchange: PD states along the load until the crack grows.
-        const double allowed =
-          std::min(controller.allowed_advance(scene.body.clearance(tip.position)), max_length - length);
-        const auto outcome = run_exchange(model, transfer, controller, tip, allowed,
-                                          [&](const geometry::Polyline &path) { return !arrival_of(path).reason.empty(); },
-                                          s.pd, out);
-        record.pd_iterations      = outcome.iterations;
-        record.substeps           = outcome.states;
-        record.repeats            = outcome.repeats;
-        record.seconds_pd         = outcome.seconds_pd;
-        record.seconds_extraction = outcome.seconds_extraction;
-        result.pd_node_steps += outcome.node_steps;
-        record.load_factor = outcome.load_factor;
-        record.lambda      = outcome.load_factor * tip.critical_load_factor;
-        record.k1          = tip.k1 * record.lambda;
-        record.k2          = tip.k2 * record.lambda;
-        record.decision    = outcome.branching.empty() ? to_text(outcome.decision) : "branching";
-        global.scale_to(record.lambda);
-        std::tie(record.load, record.displacement) = global.report();
+    std::string Cycle::limit_reached(std::size_t n) const
+    {
+      if (n >= s.cycle.max_exchanges)
+        return "maximum exchanges";
+      if (crack->length() >= max_length - 1e-9)
+        return "maximum crack length";
+      return "";
+    }
 
-        // 4. The increment into the crack; arrival at a hole or the outline ends the run.
-        const std::string stop = grow(*crack, outcome, allowed, s.cycle.exchange.max_load_factor, arrival_of, h);
-        record.advance         = crack->length() - length;
+    GlobalLocalResult Cycle::finish()
+    {
+      if (result.stop_reason.empty() && state.finished) // resumed from the checkpoint of a run that had stopped
+        result.stop_reason = "nothing to resume: the checkpointed run had already stopped after exchange " +
+                             std::to_string(state.exchanges) + " (its reason: the last row of load_steps.csv)";
+      result.path    = crack->vertices();
+      result.boxes   = boxes.history();
+      result.seconds = seconds_since(t0);
+      if (!result.exchanges.empty())
+        result.mean_box_area = box_area_sum / double(result.exchanges.size());
+      if (!scene.reference_path.empty())
+        {
+          const auto d               = published_distance(result.path, scene.reference_path, 0.1 * h);
+          result.reference_mean      = d.mean;
+          result.reference_hausdorff = d.hausdorff;
+        }
+      print_summary(result, scene, h, s.cycle.reference_box_area, out);
+      return result;
+    }
 
-        // 5. What people look at, and the checkpoint.
-        const bool last = !stop.empty() || n + 1 >= s.cycle.max_exchanges || crack->length() >= max_length - 1e-9;
-        result.exchanges.push_back(record);
-        write_row(steps, record);
-        if (outcome.branching.empty() && (outcome.decision == Decision::accept || outcome.decision == Decision::truncate))
-          recorder.load_displacement(n, record.lambda, record.load, record.displacement, crack->length(),
-                                     crack->vertices().back());
-        if (n % s.cycle.output_interval == 0 || last)
-          {
-            recorder.global_state(global, double(n));
-            recorder.pd_state(model, outcome.state);
-          }
-        recorder.crack_path(crack->vertices());
-        if (recorder.writes())
-          {
-            write_boxes(CsvFile(recorder.path("boxes.csv"), "exchange,x_min_m,y_min_m,x_max_m,y_max_m,moved"),
-                        boxes.history());
-            cycle.exchanges   = n + 1;
-            cycle.load_factor = controller.load_factor();
-            cycle.finished    = !stop.empty();
-            cycle.crack       = crack->vertices();
-            cycle.boxes       = boxes.history();
-            cycle.refined_at  = global.refined_at();
-            write_cycle_checkpoint(checkpoint, cycle);
-          }
+    std::string Cycle::solve_global(ExchangeRecord &record, TipState &tip)
+    {
+      const auto t                = Clock::now();
+      tip                         = global.solve(*crack).front();
+      record.tip                  = tip.position;
+      record.critical_load_factor = tip.critical_load_factor;
+      record.dofs                 = global.n_dofs();
+      record.enriched_dofs        = global.n_enriched_dofs();
+      record.seconds_global       = seconds_since(t);
+      return tip.k1 > 0. ? "" : "the crack closes under the load (K_I <= 0)";
+    }
 
-        // ETA: the growth rate so far against what is left to grow (to the length limit, or to
-        // the boundary ahead of the tip).
-        const double grown = crack->length() - length0;
-        const double ahead = std::min(max_length - crack->length(),
-                                      crack->tips().empty() ? 0. : scene.body.ray_to_outline(crack->tips()[0].position,
-                                                                                             crack->tips()[0].direction));
-        const double eta = grown > 0. ? seconds_since(t0) / grown * ahead : 0.;
-        out << "exchange " << std::setw(3) << n << "  lambda " << std::setprecision(4) << record.lambda << " ("
-            << record.load_factor << " lambda_c)  crack " << crack->length() << " m  +" << 1e3 * record.advance
-            << " mm  tip " << to_text(crack->vertices().back()) << "  box [" << box.x_min << ", " << box.x_max << "] x ["
-            << box.y_min << ", " << box.y_max << "]" << (boxes.moved() ? " new" : "") << "  " << record.pd_nodes
-            << " PD nodes, " << record.substeps << " states, " << record.pd_iterations << " DR its  ETA <= " << std::fixed
-            << std::setprecision(0) << eta << " s" << std::defaultfloat << std::setprecision(6) << std::endl;
-        if (!stop.empty())
-          {
-            result.stop_reason = stop;
-            out << "  stop: " << stop << "\n";
-            break;
-          }
-      }
+    local::PdModel Cycle::pd_body(const TipState &tip, ExchangeRecord &record)
+    {
+      const auto t = Clock::now();
+      record.box   = boxes.place(tip.position, tip.direction);
+      local::PdModel model(material, s.pd.horizon, s.pd.horizon_over_spacing,
+                           local::Region{scene.body, record.box, {crack->vertices()}});
+      record.pd_nodes                 = model.nodes().size();
+      record.seconds_point_evaluation = seconds_since(t);
+      box_area_sum += record.box.width() * record.box.height();
+      return model;
+    }
 
-    if (result.stop_reason.empty() && cycle.finished) // resumed from the checkpoint of a run that had stopped
-      result.stop_reason = "nothing to resume: the checkpointed run had already stopped after exchange " +
-                           std::to_string(cycle.exchanges) + " (its reason: the last row of load_steps.csv)";
-    result.path    = crack->vertices();
-    result.boxes   = boxes.history();
-    result.seconds = seconds_since(t0);
-    if (!result.exchanges.empty())
-      result.mean_box_area = box_area_sum / double(result.exchanges.size());
-    if (!scene.reference_path.empty())
-      {
-        const auto d               = published_distance(result.path, scene.reference_path, 0.1 * h);
-        result.reference_mean      = d.mean;
-        result.reference_hausdorff = d.hausdorff;
-      }
-    print_summary(result, scene, h, s.cycle.reference_box_area, out);
-    return result;
+    BoundaryTransfer Cycle::transfer_to(const local::PdModel &model, ExchangeRecord &record)
+    {
+      const auto       t = Clock::now();
+      BoundaryTransfer transfer(global, model);
+      record.seconds_point_evaluation += seconds_since(t);
+      return transfer;
+    }
+
+    ExchangeOutcome Cycle::exchange(const local::PdModel &model, const BoundaryTransfer &transfer, const TipState &tip,
+                                    ExchangeRecord &record)
+    {
+      const double allowed = std::min(controller.allowed_advance(scene.body.clearance(tip.position)),
+                                      max_length - record.crack_length);
+      auto outcome = run_exchange(model, transfer, controller, tip, allowed,
+                                  [&](const geometry::Polyline &path) { return !arrival_of(path).reason.empty(); },
+                                  s.pd, out);
+      outcome.increment.path = truncate(outcome.increment.path, allowed);
+      record.pd_iterations      = outcome.iterations;
+      record.substeps           = outcome.states;
+      record.repeats            = outcome.repeats;
+      record.seconds_pd         = outcome.seconds_pd;
+      record.seconds_extraction = outcome.seconds_extraction;
+      result.pd_node_steps += outcome.node_steps;
+      record.load_factor = outcome.load_factor;
+      record.lambda      = outcome.load_factor * tip.critical_load_factor;
+      record.k1          = tip.k1 * record.lambda;
+      record.k2          = tip.k2 * record.lambda;
+      record.decision    = outcome.branching.empty() ? to_text(outcome.decision) : "branching";
+      global.scale_to(record.lambda);
+      std::tie(record.load, record.displacement) = global.report();
+      return outcome;
+    }
+
+    std::string Cycle::grow(const ExchangeOutcome &outcome, ExchangeRecord &record)
+    {
+      if (!outcome.branching.empty())
+        return "crack branching in the PD box, refused: " + outcome.branching;
+      if (outcome.decision == Decision::too_small)
+        {
+          std::ostringstream reason;
+          reason << "the load is too small to grow the crack: no growth up to " << s.cycle.exchange.max_load_factor
+                 << " lambda_c";
+          return reason.str();
+        }
+      const auto arrival = arrival_of(outcome.increment.path);
+      for (std::size_t k = 1; k < arrival.path.size(); ++k)
+        if (geometry::norm(arrival.path[k] - crack->vertices().back()) > 1e-3 * h)
+          crack->grow(0, arrival.path[k]);
+      record.advance = crack->length() - record.crack_length;
+      return arrival.reason;
+    }
+
+    void Cycle::write(const ExchangeRecord &record, const local::PdModel &model, const ExchangeOutcome &outcome,
+                      const std::string &stop)
+    {
+      const std::size_t n    = record.exchange;
+      const bool        last = !stop.empty() || n + 1 >= s.cycle.max_exchanges || crack->length() >= max_length - 1e-9;
+      result.exchanges.push_back(record);
+      write_row(steps, record);
+      if (outcome.branching.empty() && (outcome.decision == Decision::accept || outcome.decision == Decision::truncate))
+        recorder.load_displacement(n, record.lambda, record.load, record.displacement, crack->length(),
+                                   crack->vertices().back());
+      if (n % s.cycle.output_interval == 0 || last)
+        {
+          recorder.global_state(global, double(n));
+          recorder.pd_state(model, outcome.state);
+        }
+      recorder.crack_path(crack->vertices());
+      if (recorder.writes())
+        {
+          write_boxes(CsvFile(recorder.path("boxes.csv"), "exchange,x_min_m,y_min_m,x_max_m,y_max_m,moved"), boxes.history());
+          state.exchanges   = n + 1;
+          state.load_factor = controller.load_factor();
+          state.finished    = !stop.empty();
+          state.crack       = crack->vertices();
+          state.boxes       = boxes.history();
+          state.refined_at  = global.refined_at();
+          write_cycle_checkpoint(checkpoint, state);
+        }
+
+      // ETA: the growth rate so far against what is left to grow (to the length limit, or to the
+      // boundary ahead of the tip).
+      const double grown = crack->length() - length0;
+      const double ahead = std::min(max_length - crack->length(),
+                                    crack->tips().empty() ? 0. : scene.body.ray_to_outline(crack->tips()[0].position,
+                                                                                           crack->tips()[0].direction));
+      const double eta = grown > 0. ? seconds_since(t0) / grown * ahead : 0.;
+      const auto  &box = record.box;
+      out << "exchange " << std::setw(3) << n << "  lambda " << std::setprecision(4) << record.lambda << " ("
+          << record.load_factor << " lambda_c)  crack " << crack->length() << " m  +" << 1e3 * record.advance
+          << " mm  tip " << to_text(crack->vertices().back()) << "  box [" << box.x_min << ", " << box.x_max << "] x ["
+          << box.y_min << ", " << box.y_max << "]" << (boxes.moved() ? " new" : "") << "  " << record.pd_nodes
+          << " PD nodes, " << record.substeps << " states, " << record.pd_iterations << " DR its  ETA <= " << std::fixed
+          << std::setprecision(0) << eta << " s" << std::defaultfloat << std::setprecision(6) << std::endl;
+    }
+  } // namespace
+
+  GlobalLocalResult run_global_local(const Scene &scene, const GlobalLocalSettings &settings, std::ostream &progress)
+  {
+    return Cycle(scene, settings, progress).run();
   }
 } // namespace pumpd::coupling

@@ -10,6 +10,7 @@
 #include <sstream>
 #include <string>
 
+#include "error.h"
 #include "parameters.h"
 
 namespace
@@ -18,16 +19,6 @@ namespace
                       "  Runs the scene described by a deal.II ParameterHandler file (a specimen: its mesh, material,\n"
                       "  boundary conditions and cracks; and the method that computes it); see prm/ for examples\n"
                       "  and --print-parameters for every parameter, its default and its allowed range.\n";
-
-  /// One line: deal.II's multi-line messages folded.
-  std::string one_line(const std::string &text)
-  {
-    std::istringstream in(text);
-    std::string        word, line;
-    while (in >> word)
-      line += (line.empty() ? "" : " ") + word;
-    return line;
-  }
 } // namespace
 
 int main(int argc, char **argv)
@@ -57,11 +48,11 @@ int main(int argc, char **argv)
     {
       std::ostringstream info;
       e.print_info(info);
-      std::cerr << "pumpd: error in " << arg << ": " << one_line(info.str()) << "\n";
+      std::cerr << "pumpd: error in " << arg << ": " << pumpd::one_line(info.str()) << "\n";
     }
   catch (const std::exception &e)
     {
-      std::cerr << "pumpd: error in " << arg << ": " << one_line(e.what()) << "\n";
+      std::cerr << "pumpd: error in " << arg << ": " << pumpd::one_line(e.what()) << "\n";
     }
   return 1;
 }

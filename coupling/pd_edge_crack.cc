@@ -5,7 +5,6 @@
 #include <memory>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
 #include <iomanip>
 #include <ostream>
 
@@ -142,18 +141,12 @@ namespace pumpd::coupling
       local::write_checkpoint(p.output_directory + "/checkpoint.h5", model, s,
                               {{"k_over_kc", previous}, {"load_steps_done", double(result.steps.size())}});
 
-    const auto    damage = model.damage(s);
-    std::ofstream map;
-    if (!p.output_directory.empty())
-      {
-        map.open(p.output_directory + "/damage.csv");
-        map << "x_m,y_m,damage\n";
-      }
+    const auto damage = model.damage(s);
+    CsvFile    map    = p.output_directory.empty() ? CsvFile() : CsvFile(p.output_directory + "/damage.csv", "x_m,y_m,damage");
     for (std::size_t i : model.nodes())
       {
         const auto x = model.lattice().position(i);
-        if (map)
-          map << x.x << "," << x.y << "," << damage[i] << "\n";
+        map.row(x.x, x.y, damage[i]);
         if (damage[i] > p.pd.crack_damage && x.x > 0.)
           {
             result.crack_nodes.push_back(x);

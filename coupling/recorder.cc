@@ -1,8 +1,6 @@
 #include "recorder.h"
 
 #include <filesystem>
-#include <fstream>
-#include <iomanip>
 
 #include "global_problem.h"
 #include "vtu_output.h"
@@ -11,21 +9,27 @@ namespace pumpd::coupling
 {
   namespace
   {
+    void write_path(const std::string &file, const geometry::Polyline &path)
+    {
+      CsvFile out(file, "x_m,y_m");
+      for (const auto &p : path)
+        out.row(p.x, p.y);
+    }
+
     /// body.csv: one row per point of each boundary curve (arcs sampled), then the named points
     /// of the conditions: curve,x_m,y_m with curve "outline", "hole<k>" or "point:<name>".
     void write_body(const std::string &file, const Scene &scene)
     {
-      std::ofstream out(file);
-      out << std::setprecision(10) << "curve,x_m,y_m\n";
+      CsvFile out(file, "curve,x_m,y_m");
       for (const auto &p : scene.body.outline().sampled(0.05))
-        out << "outline," << p.x << "," << p.y << "\n";
+        out.row("outline", p.x, p.y);
       for (std::size_t k = 0; k < scene.body.holes().size(); ++k)
         for (const auto &p : scene.body.holes()[k].sampled(0.05))
-          out << "hole" << k << "," << p.x << "," << p.y << "\n";
+          out.row("hole" + std::to_string(k), p.x, p.y);
       const auto points = [&](const conditions::Place &place) {
         if (place.kind == conditions::Place::Kind::point)
           for (const auto &p : place.points)
-            out << "point:" << place.name << "," << p.x << "," << p.y << "\n";
+            out.row("point:" + place.name, p.x, p.y);
       };
       for (const auto &d : scene.conditions.displacements)
         points(d.place);

@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <fstream>
 #include <iomanip>
+#include <iostream>
 #include <map>
 #include <set>
 #include <sstream>
@@ -40,21 +41,6 @@ namespace pumpd::coupling
       throw InvalidParameter("Initial cracks", std::to_string(cracks.size()) + " cracks",
                              "this method grows exactly one crack (several cracks come in a later version)");
     return cracks.front();
-  }
-
-  std::string to_text(Point p)
-  {
-    std::ostringstream s;
-    s << "(" << p.x << ", " << p.y << ")";
-    return s.str();
-  }
-
-  std::string to_text(const geometry::Polyline &line)
-  {
-    std::ostringstream s;
-    for (std::size_t k = 0; k < line.size(); ++k)
-      s << (k == 0 ? "" : "; ") << line[k].x << "," << line[k].y;
-    return s.str();
   }
 
   void SceneSettings::add_parameters(ParameterHandler &prm)
@@ -153,29 +139,34 @@ namespace pumpd::coupling
       return parts;
     }
 
-    std::string one_line(const std::string &text)
-    {
-      std::istringstream in(text);
-      std::string        word, line;
-      while (in >> word)
-        line += (line.empty() ? "" : " ") + word;
-      return line;
-    }
-
     /// f(x, y, lambda) of an expression; InvalidParameter(entry, ...) if it does not parse.
     std::function<double(Point, double)> compile(const std::string &expression, const std::string &entry)
     {
       auto f = std::make_shared<dealii::FunctionParser<2>>(1);
+      // deal.II's parser writes a five-line report to std::cerr before it throws: kept out of the
+      // one-line message, which takes the parser's reason from the exception.
+      struct Silenced
+      {
+        std::ostringstream sink;
+        std::streambuf    *saved = std::cerr.rdbuf(sink.rdbuf());
+        ~Silenced() { std::cerr.rdbuf(saved); }
+      };
       try
         {
+          const Silenced silenced;
           f->initialize("x,y,lambda", expression, {{"pi", pi}}, true);
           f->set_time(1.);
           f->value(dealii::Point<2>(0., 0.));
         }
       catch (const std::exception &e)
         {
-          throw InvalidParameter(entry, expression,
-                                 "not an expression of x, y and lambda (" + one_line(e.what()).substr(0, 200) + ")");
+          std::string       why = one_line(e.what());
+          const std::string key = "The parser said: ";
+          if (const auto k = why.find(key); k != std::string::npos)
+            why = why.substr(k + key.size());
+          if (const auto k = why.find(" Stacktrace:"); k != std::string::npos)
+            why = why.substr(0, k);
+          throw InvalidParameter(entry, expression, "not an expression of x, y and lambda (" + why.substr(0, 200) + ")");
         }
       return [f](Point x, double lambda) {
         f->set_time(lambda);
@@ -245,7 +236,17 @@ namespace pumpd::coupling
             };
           }
         else
-          throw InvalidParameter(entry, text, "the mesh has no " + kinds(allowed) + " named \"" + name + "\" (it names " + listing() + ")");
+          {
+            // A name of the wrong kind (a traction on a point, a point force on a curve) is a
+            // different mistake from a name the mesh does not have.
+            const std::string kind = names.boundaries.count(name) ? "boundary (Physical Curve)"
+                                     : names.points.count(name)   ? "point (Physical Point)"
+                                     : names.regions.count(name)  ? "region (Physical Surface)"
+                                                                  : "";
+            if (!kind.empty())
+              throw InvalidParameter(entry, text, "\"" + name + "\" is a " + kind + ", but this entry takes a " + kinds(allowed));
+            throw InvalidParameter(entry, text, "the mesh has no " + kinds(allowed) + " named \"" + name + "\" (it names " + listing() + ")");
+          }
         std::sort(place.points.begin(), place.points.end(),
                   [](Point a, Point b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
         place.points.erase(std::unique(place.points.begin(), place.points.end(),
@@ -312,6 +313,11 @@ namespace pumpd::coupling
           if (colon == std::string::npos || trim(p.text.substr(0, colon)).empty())
             throw InvalidParameter(entry, p.text, "a condition names its place first: \"<name>: " + *variables.begin() + " = ...\"");
           p.place = trim(p.text.substr(0, colon));
+          if (trim(p.text.substr(colon + 1)).empty())
+            {
+              out.push_back(p); // "<name>:" alone: the entry's check says which components it takes
+              continue;
+            }
           for (const auto &assignment : split_outside_parentheses(p.text.substr(colon + 1), ','))
             {
               const auto eq = assignment.find('=');
@@ -342,7 +348,8 @@ namespace pumpd::coupling
             throw InvalidParameter(entry, p.text,
                                    variable + " must be proportional to the load factor lambda (0 at lambda = 0, "
                                               "linear in it): the methods scale the whole loading with lambda; at " +
-                                     to_text(x) + " it is " + std::to_string(f0) + " at lambda = 0");
+                                     to_text(x) + " it is " + to_text(f0) + ", " + to_text(f1) + ", " + to_text(f2) +
+                                     " at lambda = 0, 1, 2");
         }
       return [f](Point x) { return f(x, 1.); };
     }
@@ -408,8 +415,8 @@ namespace pumpd::coupling
         else if (std::abs(slot.second - value) > 1e-12 * std::max(std::abs(slot.second), std::abs(value)))
           throw InvalidParameter("Displacement", slot.first + " and " + name,
                                  "both prescribe u" + std::string(component == 0 ? "x" : "y") + " at the vertex " +
-                                   to_text(x) + " with different values (" + std::to_string(slot.second) + " and " +
-                                   std::to_string(value) + " at lambda = 1): one vertex takes one value");
+                                   to_text(x) + " with different values (" + to_text(slot.second) + " and " +
+                                   to_text(value) + " at lambda = 1): one vertex takes one value");
       };
       for (const auto &d : c.displacements)
         for (const auto &x : d.place.points)
@@ -529,7 +536,7 @@ namespace pumpd::coupling
             {
               throw InvalidParameter("Initial cracks", trim(line), e.what());
             }
-          // An end off the boundary by less than half the cell it lies in was meant as a mouth.
+          // An end off the boundary by less than a tenth of the cell it lies in was meant as a mouth.
           for (const Point end : {crack.front(), crack.back()})
             {
               const double d = body.clearance(end);
@@ -537,12 +544,12 @@ namespace pumpd::coupling
                 continue;
               const auto cell =
                 dealii::GridTools::find_active_cell_around_point(tria, dealii::Point<2>(end.x, end.y));
-              if (cell.state() == dealii::IteratorState::valid && d < 0.5 * cell->diameter())
+              if (cell.state() == dealii::IteratorState::valid && d < 0.1 * cell->diameter())
                 throw InvalidParameter("Initial cracks", trim(line),
-                                       "the end " + to_text(end) + " is " + std::to_string(d) +
+                                       "the end " + to_text(end) + " is " + to_text(d) +
                                          " m from the boundary: a mouth must lie on the outline or a hole's rim "
-                                         "(within " + std::to_string(tolerance) + " m), a tip at least half a cell (" +
-                                         std::to_string(0.5 * cell->diameter()) + " m) from it");
+                                         "(within " + to_text(tolerance) + " m), a tip at least a tenth of its cell (" +
+                                         to_text(0.1 * cell->diameter()) + " m) from it");
             }
           cracks.push_back(crack);
         }
@@ -643,11 +650,4 @@ namespace pumpd::coupling
     return path;
   }
 
-  void write_path(const std::string &file, const geometry::Polyline &path)
-  {
-    std::ofstream out(file);
-    out << std::setprecision(10) << "x_m,y_m\n";
-    for (const auto &p : path)
-      out << p.x << "," << p.y << "\n";
-  }
 } // namespace pumpd::coupling

@@ -103,7 +103,4 @@ namespace pumpd::coupling
   /// Reference path (x, y per line; lines starting with '#' or a letter are skipped). Throws
   /// InvalidParameter("Reference path", ...) if it cannot be read.
   geometry::Polyline read_path(const std::string &file);
-  void               write_path(const std::string &file, const geometry::Polyline &path);
-  std::string        to_text(geometry::Point p);
-  std::string        to_text(const geometry::Polyline &line);
 } // namespace pumpd::coupling

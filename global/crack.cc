@@ -17,13 +17,6 @@ namespace pumpd::global
 
   namespace
   {
-    std::string to_text(Point p)
-    {
-      std::ostringstream s;
-      s << "(" << p.x << ", " << p.y << ")";
-      return s.str();
-    }
-
     /// t itself, or InvalidParameter if there is no tip t.
     std::size_t check_tip(std::size_t t, std::size_t tips)
     {

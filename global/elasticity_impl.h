@@ -142,6 +142,10 @@ namespace pumpd::global
                                         const std::function<std::array<double, 4>(geometry::Point, int)> &grad) const;
     std::vector<StressIntensity> stress_intensity_factors(double radius_factor) const;
     double                       strain_energy() const;
+    /// Visits every quadrature point of the body (the cells' own quadratures, cut cells on their
+    /// sub-triangles): its position, crack side, u_h, grad u_h and JxW.
+    void for_each_point(const std::function<void(const Point &x, int side, const dealii::Tensor<1, 2> &u,
+                                                 const dealii::Tensor<2, 2> &grad, double JxW)> &visit) const;
     void                         write_vtu(const std::string &filename) const;
 
     dealii::Triangulation<2>  &tria;

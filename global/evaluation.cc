@@ -47,11 +47,10 @@ namespace pumpd::global
     return {u[0][0], u[0][1]};
   }
 
-  ErrorNorms EnrichedElasticity::Impl::errors(const SidedField &exact,
-                                              const std::function<std::array<double, 4>(geometry::Point, int)> &exact_grad) const
+  void EnrichedElasticity::Impl::for_each_point(
+    const std::function<void(const Point &x, int side, const Tensor<1, 2> &u, const Tensor<2, 2> &grad, double JxW)>
+      &visit) const
   {
-    ErrorNorms                e;
-    const double              lambda = material.lambda(), mu = material.mu();
     std::vector<int>          side;
     std::vector<Tensor<1, 2>> u;
     std::vector<Tensor<2, 2>> grad;
@@ -64,26 +63,31 @@ namespace pumpd::global
           side[q] = crack ? side_at(cell, q, fv.quadrature_point(q)) : 1;
         field(fv, local_functions(cell), side, u, grad);
         for (unsigned int q = 0; q < side.size(); ++q)
-          {
-            const Point  x  = to_point(fv.quadrature_point(q));
-            const auto   ue = exact(x, side[q]);
-            const auto   ge = exact_grad(x, side[q]);
-            Tensor<2, 2> G;
-            G[0][0] = ge[0];
-            G[0][1] = ge[1];
-            G[1][0] = ge[2];
-            G[1][1] = ge[3];
-            const Tensor<2, 2> dG    = grad[q] - G;
-            const auto         inner = [&](const Tensor<2, 2> &g) {
-              return scalar_product(stress_of(g, lambda, mu), 0.5 * (g + transpose(g)));
-            };
-            const double JxW = fv.JxW(q);
-            e.l2 += (std::pow(u[q][0] - ue.x, 2) + std::pow(u[q][1] - ue.y, 2)) * JxW;
-            e.l2_exact += (ue.x * ue.x + ue.y * ue.y) * JxW;
-            e.energy += inner(dG) * JxW;
-            e.energy_exact += inner(G) * JxW;
-          }
+          visit(to_point(fv.quadrature_point(q)), side[q], u[q], grad[q], fv.JxW(q));
       }
+  }
+
+  ErrorNorms EnrichedElasticity::Impl::errors(const SidedField &exact,
+                                              const std::function<std::array<double, 4>(geometry::Point, int)> &exact_grad) const
+  {
+    ErrorNorms   e;
+    const double lambda = material.lambda(), mu = material.mu();
+    const auto   inner  = [&](const Tensor<2, 2> &g) {
+      return scalar_product(stress_of(g, lambda, mu), 0.5 * (g + transpose(g)));
+    };
+    for_each_point([&](const Point &x, int side, const Tensor<1, 2> &u, const Tensor<2, 2> &grad, double JxW) {
+      const auto   ue = exact(x, side);
+      const auto   ge = exact_grad(x, side);
+      Tensor<2, 2> G;
+      G[0][0] = ge[0];
+      G[0][1] = ge[1];
+      G[1][0] = ge[2];
+      G[1][1] = ge[3];
+      e.l2 += (std::pow(u[0] - ue.x, 2) + std::pow(u[1] - ue.y, 2)) * JxW;
+      e.l2_exact += (ue.x * ue.x + ue.y * ue.y) * JxW;
+      e.energy += inner(grad - G) * JxW;
+      e.energy_exact += inner(G) * JxW;
+    });
     e.l2           = std::sqrt(e.l2);
     e.l2_exact     = std::sqrt(e.l2_exact);
     e.energy       = std::sqrt(e.energy);
@@ -94,22 +98,11 @@ namespace pumpd::global
   // U = 1/2 int sigma(u_h) : eps(u_h) over the body (per unit thickness).
   double EnrichedElasticity::Impl::strain_energy() const
   {
-    double                    energy = 0.;
-    const double              lambda = material.lambda(), mu = material.mu();
-    std::vector<int>          side;
-    std::vector<Tensor<1, 2>> u;
-    std::vector<Tensor<2, 2>> grad;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        FEValues<2> fv(mapping, fe, quadrature(cell), field_flags);
-        fv.reinit(cell);
-        side.resize(fv.n_quadrature_points);
-        for (unsigned int q = 0; q < side.size(); ++q)
-          side[q] = crack ? side_at(cell, q, fv.quadrature_point(q)) : 1;
-        field(fv, local_functions(cell), side, u, grad);
-        for (unsigned int q = 0; q < side.size(); ++q)
-          energy += 0.5 * scalar_product(stress_of(grad[q], lambda, mu), 0.5 * (grad[q] + transpose(grad[q]))) * fv.JxW(q);
-      }
+    double       energy = 0.;
+    const double lambda = material.lambda(), mu = material.mu();
+    for_each_point([&](const Point &, int, const Tensor<1, 2> &, const Tensor<2, 2> &grad, double JxW) {
+      energy += 0.5 * scalar_product(stress_of(grad, lambda, mu), 0.5 * (grad + transpose(grad))) * JxW;
+    });
     return energy;
   }
 

@@ -32,44 +32,6 @@ namespace pumpd::global
   {
     namespace fs = std::filesystem;
 
-    std::string to_text(double v, int precision = 6)
-    {
-      std::ostringstream s;
-      s << std::setprecision(precision) << v;
-      return s.str();
-    }
-
-    std::string to_text(const geometry::Point &p)
-    {
-      return "(" + to_text(p.x, 10) + ", " + to_text(p.y, 10) + ")";
-    }
-
-    /// One line from an exception text: deal.II's "Additional information" if present,
-    /// whitespace collapsed, at most 300 characters.
-    std::string one_line(const std::string &text)
-    {
-      std::string       s   = text;
-      const std::string key = "Additional information:";
-      if (const auto k = s.find(key); k != std::string::npos)
-        s = s.substr(k + key.size());
-      if (const auto k = s.find("Stacktrace:"); k != std::string::npos)
-        s = s.substr(0, k);
-      std::string out;
-      for (const char c : s)
-        if (std::isspace(static_cast<unsigned char>(c)))
-          {
-            if (!out.empty() && out.back() != ' ')
-              out += ' ';
-          }
-        else
-          out += c;
-      while (!out.empty() && (out.back() == ' ' || out.back() == '-'))
-        out.pop_back();
-      if (out.size() > 300)
-        out = out.substr(0, 297) + "...";
-      return out;
-    }
-
     /// A directory under the system's temporary directory, removed with its content.
     class TemporaryDirectory
     {

@@ -31,6 +31,19 @@ namespace pumpd::global
           {
             found.first = tria.end();
           }
+        // A point of the body may lie just outside the mesh: between a curved outline's arc and
+        // the chord of a boundary face (the sagitta, face length^2 / (8 R), a few percent of the
+        // face). It is evaluated in the boundary cell next to it, whose fields are extended over
+        // up to a tenth of the cell.
+        if (found.first == tria.end())
+          try
+            {
+              found = GridTools::find_active_cell_around_point(cache, to_dealii(points[i]), hint, {}, 0.1);
+            }
+          catch (...)
+            {
+              found.first = tria.end();
+            }
         if (found.first == tria.end())
           throw InvalidParameter("Evaluation point",
                                  "(" + std::to_string(points[i].x) + ", " + std::to_string(points[i].y) + ")",

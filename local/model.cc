@@ -224,12 +224,13 @@ namespace pumpd::local
         }
 
     // Boundary layer: nodes closer than one horizon to a box edge inside the body, where the
-    // body goes on across the edge (the outline holds the node's foot on the edge; a box edge
-    // across a re-entrant cut-out has free surface, not more material, beyond it).
+    // body goes on across the edge (the outline holds the node's foot on the edge strictly inside;
+    // a box edge across a re-entrant cut-out, or along the outline, as at an L-panel's corner, has
+    // free surface, not more material, beyond it).
     const auto &box  = reg.box;
     const auto  edge = interior_edges(box, reg.body.bounding_box(), 0.25 * h);
     const auto  beyond = [&](geometry::Point foot) {
-      return reg.body.outline().encloses(foot) || reg.body.outline().distance(foot) <= 1e-9 * h;
+      return reg.body.outline().distance(foot) > 1e-9 * h && reg.body.outline().encloses(foot);
     };
     for (std::size_t i : active_nodes)
       {

@@ -1,10 +1,10 @@
 #!/usr/bin/python3
 """Crack path of a run as a PNG: scripts/plot_crack_path.py <output dir> -> <dir>/crack_path.png.
 
-Reads what the scene wrote into the directory: crack_path.csv (our path), body.csv (outline,
-holes, supports, load point), where the scene had a published path reference_path.csv, and for
-a global-local run boxes.csv (every PD box, drawn light to dark blue as the run goes on).
-Run it with /usr/bin/python3 (Debian's python3-matplotlib).
+Reads what the run wrote into the directory: crack_path.csv (our path), body.csv (the outline and
+the holes as curves, the named points of the boundary conditions), reference_path.csv where the
+scene has a reference path, and for a global-local run boxes.csv (every PD box, drawn light to
+dark blue as the run goes on). Run it with /usr/bin/python3 (Debian's python3-matplotlib).
 """
 import csv
 import os
@@ -14,7 +14,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-from matplotlib.patches import Circle, Rectangle  # noqa: E402
+from matplotlib.patches import Rectangle  # noqa: E402
 
 
 def path(file):
@@ -24,20 +24,23 @@ def path(file):
 
 
 directory = sys.argv[1]
+curves = {}
 with open(f"{directory}/body.csv") as f:
-    body = [(r["shape"], *(1e3 * float(r[k]) for k in ("x_min_m", "y_min_m", "x_max_m", "y_max_m")))
-            for r in csv.DictReader(f)]
+    for r in csv.DictReader(f):
+        curves.setdefault(r["curve"], []).append((1e3 * float(r["x_m"]), 1e3 * float(r["y_m"])))
 
 fig, ax = plt.subplots(figsize=(9, 4.4))
-for shape, x0, y0, x1, y1 in body:
-    if shape == "outline":
-        ax.add_patch(Rectangle((x0, y0), x1 - x0, y1 - y0, fill=False, color="black", lw=1))
-    elif shape == "hole":
-        ax.add_patch(Circle((0.5 * (x0 + x1), 0.5 * (y0 + y1)), 0.5 * (x1 - x0), fill=False, color="black", lw=1))
-    elif shape in ("pin", "roller"):
-        ax.plot(x0, y0, "^", color="dimgray", ms=9, label="supports" if shape == "pin" else None)
-    elif shape == "load":
-        ax.annotate("", xy=(x0, y0), xytext=(x0, y0 + 18), arrowprops=dict(arrowstyle="->", color="dimgray", lw=1.5))
+labelled = False
+for name, points in curves.items():
+    xs, ys = zip(*points)
+    if name.startswith("point:"):
+        ax.plot(xs, ys, "^", color="dimgray", ms=8, label="named points" if not labelled else None)
+        for x0, y0 in points:
+            ax.annotate(name[len("point:"):], (x0, y0), textcoords="offset points", xytext=(4, -12), fontsize=7,
+                        color="dimgray")
+        labelled = True
+    else:
+        ax.plot(xs, ys, color="black", lw=1)
 
 boxes = f"{directory}/boxes.csv"
 coupled = os.path.exists(boxes)
@@ -52,10 +55,9 @@ if coupled:
 
 reference = f"{directory}/reference_path.csv"
 if os.path.exists(reference):
-    ax.plot(*path(reference), color="tab:green", lw=1.2, label="published PUM-PD path")
+    ax.plot(*path(reference), color="tab:green", lw=1.2, label="reference path")
 x, y = path(f"{directory}/crack_path.csv")
-ax.plot(x, y, color="tab:red", lw=1.6, marker=".", ms=3,
-        label="coupled PUM/PD (pumpd)" if coupled else "LEFM (maximum hoop stress)")
+ax.plot(x, y, color="tab:red", lw=1.6, marker=".", ms=3, label="crack path (pumpd)")
 ax.plot(x[-1], y[-1], "o", color="tab:red", ms=5)
 
 ax.set_aspect("equal")
@@ -64,7 +66,6 @@ ax.set_ylabel("y [mm]")
 ax.set_title(f"{os.path.basename(os.path.normpath(directory))}: crack path, end ({x[-1]:.1f}, {y[-1]:.1f}) mm")
 ax.legend(loc="upper right", fontsize=8)
 ax.autoscale_view()
-ax.set_ylim(-8, max(y0 for _, _, _, _, y0 in body) + 25)
 fig.tight_layout()
 fig.savefig(f"{directory}/crack_path.png", dpi=130)
 print(f"wrote {directory}/crack_path.png")

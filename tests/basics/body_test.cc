@@ -53,7 +53,7 @@ TEST(Body, RectangleWithAHole)
   // Bonds: through the hole, tangent to it, clear of it.
   EXPECT_TRUE(body.crosses_boundary({0.2, 1.1}, {1.8, 1.1}));
   EXPECT_FALSE(body.crosses_boundary({0.2, 1.5}, {1.8, 1.5}));
-  EXPECT_FALSE(body.crosses_boundary({0.2, 0.2}, {3.8, 1.8}));
+  EXPECT_FALSE(body.crosses_boundary({0.2, 0.2}, {3.8, 0.4})); // 0.75 from the centre
   // A crack segment that touches the hole within the allowed depth does not cross it.
   EXPECT_FALSE(body.crosses_boundary({0.2, 1.499}, {1.8, 1.499}, 0.002));
   EXPECT_TRUE(body.crosses_boundary({0.2, 1.49}, {1.8, 1.49}, 0.002));
@@ -106,7 +106,9 @@ TEST(Body, ReEntrantCornerOfAnLPanel)
   // From below the corner, rays into the cut-out and along the leg.
   EXPECT_NEAR(body.ray_to_outline({1.5, 0.5}, {0, 1}), 0.5, 1e-14);
   EXPECT_NEAR(body.ray_to_outline({0.5, 0.5}, {0, 1}), 1.5, 1e-14);
-  EXPECT_NEAR(body.clearance({1.1, 0.9}), std::hypot(0.1, 0.1), 1e-14);
+  // Below the cut-out its lower side is nearest; diagonally off the corner, the corner.
+  EXPECT_NEAR(body.clearance({1.1, 0.9}), 0.1, 1e-14);
+  EXPECT_NEAR(body.clearance({0.9, 0.9}), std::hypot(0.1, 0.1), 1e-14);
 }
 
 TEST(Body, SemicircularDiscHasAnArcAndADiameter)

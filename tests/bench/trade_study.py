@@ -32,11 +32,11 @@ import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
-# name, base scene, overrides {subsection: {entry: value}}, what the setting trades
+# name, base scene, overrides {subsection (nested ones as "A/B"): {entry: value}}, what the setting trades
 COUPLED = "prm/ingraffea-case2.prm"
 SCENARIOS = [
     ("lefm", "prm/ingraffea-case2-lefm.prm",
-     {"Material": {"Young's modulus": "2.4e9"}, "LEFM growth": {"Poisson's ratio": "0.25"}},
+     {"Scene/Material": {"Young's modulus": "2.4e9", "Poisson's ratio": "0.25"}},
      "LEFM only (XFEM + maximum hoop stress), da = 4 mm"),
     ("coupled-default", COUPLED, {},
      "m = 8, delta = 4 mm, box 32 mm, da_max 8 mm, 2 tip refinements, each exchange from 0.9 P_c"),
@@ -61,9 +61,9 @@ SCENARIOS = [
     ("coupled-da5", COUPLED, {"Global-local": {"Maximum advance": "0.005", "Minimum advance": "0.0025"}},
      "exchange increment: da_max 5 mm (min 2.5 mm)"),
     ("coupled-da16", COUPLED, {"Global-local": {"Maximum advance": "0.016"}}, "exchange increment: da_max 16 mm"),
-    ("coupled-ref1", COUPLED, {"Global-local": {"Refinement levels near the tip": "1"}},
+    ("coupled-ref1", COUPLED, {"Global": {"Refinement levels near the tip": "1"}},
      "global refinement: 1 level at the tip (2 mm cells)"),
-    ("coupled-ref3", COUPLED, {"Global-local": {"Refinement levels near the tip": "3"}},
+    ("coupled-ref3", COUPLED, {"Global": {"Refinement levels near the tip": "3"}},
      "global refinement: 3 levels at the tip (0.5 mm cells)"),
     ("fullpd-delta8", "prm/ingraffea-case2-fullpd.prm", {"Peridynamics": {"Horizon": "0.008"}},
      "full-domain PD beam, horizon 8 mm (h = 2 mm): the horizon convergence check"),
@@ -79,7 +79,9 @@ def scene_file(base, overrides, out_dir, path):
         text = f.read()
     overrides = {**overrides, "Scene": {"Output directory": out_dir}}
     for section, entries in overrides.items():
-        text += f"\nsubsection {section}\n" + "".join(f"  set {k} = {v}\n" for k, v in entries.items()) + "end\n"
+        levels = section.split("/")
+        text += "\n" + "".join(f"subsection {level}\n" for level in levels)
+        text += "".join(f"  set {k} = {v}\n" for k, v in entries.items()) + "end\n" * len(levels)
     with open(path, "w") as f:
         f.write(text)
 

@@ -89,7 +89,7 @@ TEST(GlobalConvergence, WilliamsFieldOptimalRates)
           problem.solve();
           const auto err = problem.errors(exact, [&](geometry::Point x, int side) {
             const auto f = field.at(x, side);
-            return std::array<double, 4>{f.grad[0][0], f.grad[0][1], f.grad[1][0], f.grad[1][1]};
+            return std::array<double, 4>{{f.grad[0][0], f.grad[0][1], f.grad[1][0], f.grad[1][1]}};
           });
           const auto sif = problem.stress_intensity_factors();
           std::cout << "mode " << mode << " n = " << n << ": dofs " << problem.n_dofs() << " (enriched "

@@ -1,0 +1,22 @@
+// A 1 m x 0.5 m plate of 10 x 5 square cells, every edge and a corner named (scene_test.cc).
+Point(1) = {0, 0, 0};
+Point(2) = {1, 0, 0};
+Point(3) = {1, 0.5, 0};
+Point(4) = {0, 0.5, 0};
+Line(1) = {1, 2};
+Line(2) = {2, 3};
+Line(3) = {3, 4};
+Line(4) = {4, 1};
+Curve Loop(1) = {1, 2, 3, 4};
+Plane Surface(1) = {1};
+Transfinite Curve{1, 3} = 11;
+Transfinite Curve{2, 4} = 6;
+Transfinite Surface{1};
+Recombine Surface{1};
+Physical Surface("plate") = {1};
+Physical Curve("bottom") = {1};
+Physical Curve("right") = {2};
+Physical Curve("top") = {3};
+Physical Curve("left") = {4};
+Physical Point("origin") = {1};
+Mesh.MshFileVersion = 2.2;
