@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <optional>
 #include <set>
 
@@ -94,7 +95,8 @@ namespace pumpd::global
     rhs    = 0.;
     const double      lambda = material.lambda(), mu = material.mu();
     const UpdateFlags flags  = update_values | update_gradients | update_quadrature_points | update_JxW_values;
-    FEValues<2>       fv_plain(mapping, fe, gauss, flags), fv_tip(mapping, fe, gauss_tip, flags);
+    FEValues<2>       fv_plain(mapping, fe, gauss, flags), fv_tip(mapping, fe, gauss_tip, flags),
+      fv_far_tip(mapping, fe, gauss_far_tip, flags);
     BasisValues       basis;
     std::vector<int>  side;
     FullMatrix<double> K;
@@ -105,7 +107,7 @@ namespace pumpd::global
         const auto       functions = local_functions(cell);
         const CellData  &data      = cells[cell->active_cell_index()];
         std::optional<FEValues<2>> fv_cut;
-        FEValues<2>     *fv = data.tip_enriched ? &fv_tip : &fv_plain;
+        FEValues<2>     *fv = !data.tip_enriched ? &fv_plain : data.near_tip ? &fv_tip : &fv_far_tip;
         if (data.subdivided)
           fv = &fv_cut.emplace(mapping, fe, data.quadrature, flags);
         fv->reinit(cell);
@@ -278,9 +280,10 @@ namespace pumpd::global
                 }
           }
       }
+    const double tol = 1e-6 * GridTools::minimal_cell_diameter(tria);
     for (const auto &load : point_loads)
       for (const auto p : node_set)
-        if (geometry::norm(to_point(support[nodes[p]]) - load.at) <= 1e-6 * GridTools::minimal_cell_diameter(tria))
+        if (geometry::norm(to_point(support[nodes[p]]) - load.at) <= tol)
           force = force - load.force;
     return force;
   }
@@ -338,9 +341,22 @@ namespace pumpd::global
     SolveReport report;
     if (settings_.type == SolverSettings::Type::direct)
       {
+        // Symmetric diagonal scaling D A D y = D f, D = diag(A)^-1/2, x = D y: the enriched
+        // unknowns' diagonals are orders of magnitude below the standard ones, which makes
+        // UMFPACK reject diagonal pivots and lose the fill-reducing ordering.
+        Vector<double> scale(n_dofs), scaled_rhs(rhs);
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          scale(i) = matrix.diag_element(i) > 0. ? 1. / std::sqrt(matrix.diag_element(i)) : 1.;
+        SparseMatrix<double> scaled(matrix.get_sparsity_pattern());
+        scaled.copy_from(matrix);
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          for (auto it = scaled.begin(i); it != scaled.end(i); ++it)
+            it->value() *= scale(i) * scale(it->column());
+        scaled_rhs.scale(scale);
         SparseDirectUMFPACK direct;
-        direct.initialize(matrix);
-        direct.vmult(solution, rhs);
+        direct.initialize(scaled);
+        direct.vmult(solution, scaled_rhs);
+        solution.scale(scale);
         report.solver = "UMFPACK";
       }
     else

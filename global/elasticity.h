@@ -56,6 +56,9 @@ namespace pumpd::global
     double       min_cut_fraction = 1e-4; ///< drop H below this support fraction (conditioning)
     unsigned int cut_order        = 4;    ///< Gauss simplex order on cut sub-triangles
     unsigned int tip_order        = 8;    ///< Gauss / Duffy order where branch functions live
+    /// Gauss order on tip-enriched cells whose centre lies more than 2.5 diameters from every tip:
+    /// the branch functions are smooth there (analytic in a disc of radius r about each point).
+    unsigned int far_tip_order = 4;
   };
 
   /// Linear solver: sparse direct (UMFPACK, the default) or conjugate gradients preconditioned by

@@ -65,6 +65,7 @@ namespace pumpd::global
     bool                      subdivided   = false; ///< integrated on its own sub-triangles
     bool                      has_tip      = false;
     bool                      tip_enriched = false; ///< some basis function carries F_j
+    bool                      near_tip     = false; ///< within two diameters of a tip
     int                       side         = 1;     ///< side of an uncut cell (of its centre)
     std::vector<SubTriangle>  triangles;            ///< subdivided cells only
     std::vector<int>          triangle_side;
@@ -82,6 +83,7 @@ namespace pumpd::global
       , dof_handler(t)
       , gauss(2)
       , gauss_tip(s.tip_order)
+      , gauss_far_tip(s.far_tip_order)
     {}
 
     struct Dirichlet
@@ -154,7 +156,7 @@ namespace pumpd::global
     dealii::MappingQ1<2>       mapping;
     dealii::FE_Q<2>            fe;
     dealii::DoFHandler<2>      dof_handler;
-    dealii::QGauss<2>          gauss, gauss_tip;
+    dealii::QGauss<2>          gauss, gauss_tip, gauss_far_tip;
     std::optional<Crack>       crack;
 
     std::vector<Dirichlet>                                  dirichlet;

@@ -218,11 +218,13 @@ namespace pumpd::global
             for (auto s : dofs)
               for (const auto &pw : parents[s])
                 data.tip_enriched |= kind[pw.first] == NodeKind::tip;
+            for (const auto &tip : crack->tips())
+              data.near_tip |= geometry::norm(to_point(cell->center()) - tip.position) < 2.5 * cell->diameter();
             double plus = 0., minus = 0.;
             if (data.subdivided)
               {
                 data.quadrature = sub_triangle_quadrature(
-                  data.triangles, data.tip_enriched ? settings.tip_order : settings.cut_order, data.triangle_of_point);
+                  data.triangles, data.tip_enriched && data.near_tip ? settings.tip_order : settings.cut_order, data.triangle_of_point);
                 for (const auto &tri : data.triangles)
                   {
                     const RefPoint c = (1. / 3.) * (tri.vertex[0] + tri.vertex[1] + tri.vertex[2]);
@@ -388,7 +390,9 @@ namespace pumpd::global
     const CellData &data = cells[cell->active_cell_index()];
     if (data.subdivided)
       return data.quadrature;
-    return data.tip_enriched ? gauss_tip : gauss;
+    if (!data.tip_enriched)
+      return gauss;
+    return data.near_tip ? gauss_tip : gauss_far_tip;
   }
 
   int EnrichedElasticity::Impl::side_at(const Cell &cell, unsigned int q, const dealii::Point<2> &x) const
