@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <optional>
 #include <string>
 
 #include "error.h"
@@ -13,6 +15,7 @@ namespace pumpd::coupling
 
   BoxPolicy::BoxPolicy(const geometry::Body &b, const BoxSettings &settings)
     : body(b)
+    , unscaled(settings)
     , s(settings)
   {
     require_positive("Horizon", s.horizon);
@@ -48,21 +51,48 @@ namespace pumpd::coupling
     return free.contains(tip) && free_ahead.contains(tip + s.margin * d);
   }
 
+  namespace
+  {
+    /// The hole's bounding box with `reach` around it, if it overlaps the box.
+    std::optional<Box> within_reach(const geometry::Loop &hole, const Box &box, double reach)
+    {
+      const Box b = hole.bounding_box();
+      const Box around{b.x_min - reach, b.y_min - reach, b.x_max + reach, b.y_max + reach};
+      if (around.x_max > box.x_min && around.x_min < box.x_max && around.y_max > box.y_min && around.y_min < box.y_max)
+        return around;
+      return std::nullopt;
+    }
+
+    Box square_ahead(Point tip, Point d, const BoxSettings &s)
+    {
+      const Point c = tip + ((0.5 - s.behind) * s.size) * d;
+      return {c.x - 0.5 * s.size, c.y - 0.5 * s.size, c.x + 0.5 * s.size, c.y + 0.5 * s.size};
+    }
+  } // namespace
+
+  double BoxPolicy::smallest_hole_within_reach(Point tip, Point d) const
+  {
+    double smallest = std::numeric_limits<double>::infinity();
+    for (const auto &hole : body.holes())
+      if (within_reach(hole, square_ahead(tip, d, unscaled), 2. * unscaled.horizon))
+        {
+          const Box b = hole.bounding_box();
+          smallest    = std::min(smallest, 0.5 * std::min(b.width(), b.height()));
+        }
+    return smallest;
+  }
+
   Box BoxPolicy::fitted(Box box) const
   {
     const auto &o = body.bounding_box();
     // Holes within reach: inside with a horizon to spare, or the box grows (up to max_size).
     for (const auto &hole : body.holes())
       {
-        const Box    b     = hole.bounding_box();
-        const double reach = 2. * s.horizon;
-        const Box    around{b.x_min - reach, b.y_min - reach, b.x_max + reach, b.y_max + reach};
-        const bool   near  = around.x_max > box.x_min && around.x_min < box.x_max && around.y_max > box.y_min &&
-                          around.y_min < box.y_max;
-        if (!near || box.contains(around))
+        const auto around = within_reach(hole, box, 2. * s.horizon);
+        if (!around || box.contains(*around))
           continue;
-        Box grown{std::min(box.x_min, around.x_min), std::min(box.y_min, around.y_min),
-                  std::max(box.x_max, around.x_max), std::max(box.y_max, around.y_max)};
+        Box grown{std::min(box.x_min, around->x_min), std::min(box.y_min, around->y_min),
+                  std::max(box.x_max, around->x_max), std::max(box.y_max, around->y_max)};
         if (grown.width() <= s.max_size && grown.height() <= s.max_size)
           box = grown;
       }
@@ -90,18 +120,27 @@ namespace pumpd::coupling
     return box;
   }
 
-  Box BoxPolicy::place(Point tip, Point d)
+  Box BoxPolicy::place(Point tip, Point d, double scale)
   {
-    if (!boxes.empty() && keeps(boxes.back(), tip, d))
+    const bool rescaled = scale != last_scale;
+    if (rescaled)
+      {
+        s          = unscaled;
+        s.horizon  = scale * unscaled.horizon;
+        s.spacing  = scale * unscaled.spacing;
+        s.size     = scale * unscaled.size;
+        s.margin   = scale * unscaled.margin;
+        s.max_size = scale * unscaled.max_size;
+        last_scale = scale;
+      }
+    if (!boxes.empty() && !rescaled && keeps(boxes.back(), tip, d))
       {
         last_moved = false;
         boxes.push_back(boxes.back());
         return boxes.back();
       }
-    const Point c = tip + ((0.5 - s.behind) * s.size) * d;
-    const Box   box{c.x - 0.5 * s.size, c.y - 0.5 * s.size, c.x + 0.5 * s.size, c.y + 0.5 * s.size};
     last_moved = true;
-    boxes.push_back(fitted(box));
+    boxes.push_back(fitted(square_ahead(tip, d, s)));
     return boxes.back();
   }
 

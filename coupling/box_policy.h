@@ -34,8 +34,13 @@ namespace pumpd::coupling
     /// sides plus the margin, or does not fit into the body.
     BoxPolicy(const geometry::Body &body, const BoxSettings &settings);
 
-    /// The box for a tip at `tip` growing along the unit `direction`; recorded in history().
-    geometry::Box place(geometry::Point tip, geometry::Point direction);
+    /// The box for a tip at `tip` growing along the unit `direction`, every length of the
+    /// settings (horizon, spacing, size, margin, maximum size) times `scale`; recorded in history().
+    /// A box of another scale is never kept.
+    geometry::Box place(geometry::Point tip, geometry::Point direction, double scale = 1.);
+    /// Half the smaller bounding-box side of the smallest hole the box at this tip (settings as
+    /// given, unscaled) would take in or grow for; infinity if none.
+    double smallest_hole_within_reach(geometry::Point tip, geometry::Point direction) const;
     /// True if the last place() made a new box.
     bool moved() const { return last_moved; }
     const std::vector<geometry::Box> &history() const { return boxes; }
@@ -47,7 +52,9 @@ namespace pumpd::coupling
     geometry::Box fitted(geometry::Box box) const;
 
     geometry::Body             body;
-    BoxSettings                s;
+    BoxSettings                unscaled;
+    BoxSettings                s; ///< of the last place()
+    double                     last_scale = 1.;
     std::vector<geometry::Box> boxes;
     bool                       last_moved = true;
   };

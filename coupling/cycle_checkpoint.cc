@@ -37,13 +37,13 @@ namespace pumpd::coupling
     std::vector<double> crack, boxes, refined;
     for (const auto &p : state.crack)
       crack.insert(crack.end(), {p.x, p.y});
-    for (const auto &p : state.refined_at)
-      refined.insert(refined.end(), {p.x, p.y});
+    for (const auto &r : state.refinements)
+      refined.insert(refined.end(), {r.at.x, r.at.y, double(r.levels)});
     for (const auto &b : state.boxes)
       boxes.insert(boxes.end(), {b.x_min, b.y_min, b.x_max, b.y_max});
     write_doubles(file, "crack", crack);
     write_doubles(file, "boxes", boxes);
-    write_doubles(file, "refined_at", refined);
+    write_doubles(file, "refinements", refined);
     write_doubles(file, "cycle", {double(state.exchanges), state.load_factor, state.finished ? 1. : 0.});
     H5Fclose(file);
     std::filesystem::rename(partial, path);
@@ -60,7 +60,7 @@ namespace pumpd::coupling
       {
         crack = read_doubles(file, "crack");
         boxes   = read_doubles(file, "boxes");
-        refined = read_doubles(file, "refined_at");
+        refined = read_doubles(file, "refinements");
         cycle = read_doubles(file, "cycle");
       }
     catch (...)
@@ -69,14 +69,14 @@ namespace pumpd::coupling
         throw;
       }
     H5Fclose(file);
-    fail_if(crack.size() < 4 || crack.size() % 2 != 0 || boxes.size() % 4 != 0 || refined.size() % 2 != 0 || cycle.size() != 3,
+    fail_if(crack.size() < 4 || crack.size() % 2 != 0 || boxes.size() % 4 != 0 || refined.size() % 3 != 0 || cycle.size() != 3,
             path + " is not a global-local cycle checkpoint");
     for (std::size_t i = 0; i < crack.size(); i += 2)
       s.crack.push_back({crack[i], crack[i + 1]});
     for (std::size_t i = 0; i < boxes.size(); i += 4)
       s.boxes.push_back({boxes[i], boxes[i + 1], boxes[i + 2], boxes[i + 3]});
-    for (std::size_t i = 0; i < refined.size(); i += 2)
-      s.refined_at.push_back({refined[i], refined[i + 1]});
+    for (std::size_t i = 0; i < refined.size(); i += 3)
+      s.refinements.push_back({{refined[i], refined[i + 1]}, (unsigned int)(refined[i + 2])});
     s.exchanges   = std::size_t(cycle[0]);
     s.load_factor = cycle[1];
     s.finished    = cycle[2] != 0.;

@@ -1,7 +1,7 @@
 // The state of the global-local cycle between two exchanges, in HDF5 (checkpoint.h5), so that an
 // interrupted run resumes where it stopped. The PD box is rebuilt at every exchange from the crack
-// polyline, so the crack, the boxes, the accepted load, the counters and the tip positions the
-// global mesh was refined at (replayed on resume: the same mesh) are the whole state.
+// polyline, so the crack, the boxes, the accepted load, the counters and the refinements of the
+// global mesh (tip positions and levels, replayed on resume: the same mesh) are the whole state.
 #pragma once
 
 #include <cstddef>
@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "geometry.h"
+#include "global_problem.h"
 
 namespace pumpd::coupling
 {
@@ -19,7 +20,7 @@ namespace pumpd::coupling
     bool                       finished    = false;
     geometry::Polyline         crack;
     std::vector<geometry::Box> boxes;
-    geometry::Polyline         refined_at; ///< tip position of every global solve so far
+    std::vector<Refinement>    refinements; ///< of every global solve so far
   };
 
   /// Throws std::runtime_error if the file cannot be written.

@@ -82,6 +82,7 @@ namespace pumpd::coupling
     prm.add_parameter("Resume", resume,
                       "true: continue from checkpoint.h5 in the output directory (written after every exchange).",
                       Patterns::Bool());
+    resolution.add_parameters(prm);
     prm.leave_subsection();
   }
 
@@ -105,13 +106,13 @@ namespace pumpd::coupling
     const char *load_steps_header =
       "exchange,lambda,load_factor,critical_load_factor,load,displacement,tip_x_m,tip_y_m,crack_length_m,K_I_Pa_sqrt_m,"
       "K_II_Pa_sqrt_m,advance_m,decision,pd_nodes,pd_substeps,pd_repeats,pd_iterations,dofs,seconds_global,"
-      "seconds_point_evaluation,seconds_pd,seconds_extraction";
+      "seconds_point_evaluation,seconds_pd,seconds_extraction,horizon_m";
 
     void write_row(CsvFile &table, const ExchangeRecord &r)
     {
       table.row(r.exchange, r.lambda, r.load_factor, r.critical_load_factor, r.load, r.displacement, r.tip.x, r.tip.y,
                 r.crack_length, r.k1, r.k2, r.advance, r.decision, r.pd_nodes, r.substeps, r.repeats, r.pd_iterations,
-                r.dofs, r.seconds_global, r.seconds_point_evaluation, r.seconds_pd, r.seconds_extraction);
+                r.dofs, r.seconds_global, r.seconds_point_evaluation, r.seconds_pd, r.seconds_extraction, r.horizon);
     }
 
     void write_boxes(CsvFile table, const std::vector<geometry::Box> &boxes)
@@ -177,6 +178,9 @@ namespace pumpd::coupling
       std::string limit_reached(std::size_t n) const;
       /// The global problem: the tip's K and critical load factor; "" or why the run stops.
       std::string solve_global(ExchangeRecord &record, TipState &tip);
+      /// The horizon of this exchange's box (resolution.h), chosen by the path ahead of the tip:
+      /// the PD settings, the box, the advance and the global refinement at the tip follow it.
+      void resolve(ExchangeRecord &record);
       /// The box around the tip and the PD body in it (the crack behind the tip as broken bonds).
       local::PdModel pd_body(const TipState &tip, ExchangeRecord &record);
       /// The mapping of the global displacement onto the body's nodes.
@@ -186,8 +190,15 @@ namespace pumpd::coupling
                                ExchangeRecord &record);
       /// The accepted increment into the crack; "" or why the run stops (a hole, the outline, ...).
       std::string grow(const ExchangeOutcome &outcome, ExchangeRecord &record);
-      /// The files for people and the checkpoint; the progress line.
-      void write(const ExchangeRecord &record, const local::PdModel &model, const ExchangeOutcome &outcome,
+      /// True if the ligament ahead of the tip (to the outline or a hole, along its direction) is
+      /// narrower than Clearance over horizon of the finest box: no PD box resolves it.
+      bool ligament_unresolved(const TipState &tip) const;
+      /// One LEFM increment of a box horizon along the maximum hoop stress direction at lambda_c
+      /// (as lefm_growth.h), to the outline or the hole where the ligament ends.
+      std::string grow_by_lefm(const TipState &tip, ExchangeRecord &record);
+      /// The files for people and the checkpoint; the progress line. `model` and `outcome` are
+      /// those of the PD exchange, none for an LEFM increment.
+      void write(const ExchangeRecord &record, const local::PdModel *model, const ExchangeOutcome *outcome,
                  const std::string &stop);
       /// The result: path, boxes, distances from the reference path; the summary metrics.
       GlobalLocalResult finish();
@@ -195,7 +206,7 @@ namespace pumpd::coupling
       /// Where a grown path ends: a hole within its margin, or the outline or a hole within a horizon.
       Arrival arrival_of(const geometry::Polyline &path) const
       {
-        return arrive(path, scene.body, s.growth.hole_margin, s.pd.horizon, 0, s.pd.horizon);
+        return arrive(path, scene.body, s.growth.hole_margin, pd.horizon, 0, pd.horizon);
       }
 
       const Scene                    &scene;
@@ -203,6 +214,9 @@ namespace pumpd::coupling
       std::ostream                   &out;
       const double                    h, max_length;
       const local::MaterialParameters material;
+      PeridynamicsSettings            pd;                 ///< of this exchange's box
+      unsigned int                    halvings     = 0;   ///< its horizon: the section's / 2^halvings
+      double                          length_scale = 1.;  ///< 2^-halvings
       std::optional<global::Crack>    crack;
       GlobalProblem                   global;
       BoxPolicy                       boxes;
@@ -231,6 +245,7 @@ namespace pumpd::coupling
       , h(settings.pd.spacing())
       , max_length(settings.growth.length_limit())
       , material(settings.pd.material(sc.material))
+      , pd(settings.pd)
       , crack(one_tip_crack(sc))
       , global(sc, settings.global)
       , boxes(sc.body, box_settings(settings))
@@ -248,8 +263,8 @@ namespace pumpd::coupling
             throw InvalidParameter("Resume", "true", "needs an output directory holding checkpoint.h5");
           state = read_cycle_checkpoint(checkpoint);
           crack.emplace(state.crack, scene.body, 1e-8 * std::max(scene.body.bounding_box().width(), scene.body.bounding_box().height()));
-          for (const auto &x : state.refined_at)
-            global.refine_at({x});
+          for (const auto &r : state.refinements)
+            global.refine(r);
           boxes.restore(state.boxes);
           controller.restore(state.load_factor);
           out << "resuming after exchange " << state.exchanges << ": crack " << crack->length() << " m\n";
@@ -271,17 +286,28 @@ namespace pumpd::coupling
           TipState    tip;
           std::string stop = limit_reached(n);
           if (stop.empty())
-            stop = solve_global(record, tip);
+            {
+              resolve(record);
+              stop = solve_global(record, tip);
+            }
           if (!stop.empty())
             {
               result.stop_reason = stop;
               break;
             }
-          const local::PdModel   model    = pd_body(tip, record);
-          const BoundaryTransfer transfer = transfer_to(model, record);
-          const ExchangeOutcome  outcome  = exchange(model, transfer, tip, record);
-          stop                            = grow(outcome, record);
-          write(record, model, outcome, stop);
+          if (ligament_unresolved(tip))
+            {
+              stop = grow_by_lefm(tip, record);
+              write(record, nullptr, nullptr, stop);
+            }
+          else
+            {
+              const local::PdModel   model    = pd_body(tip, record);
+              const BoundaryTransfer transfer = transfer_to(model, record);
+              const ExchangeOutcome  outcome  = exchange(model, transfer, tip, record);
+              stop                            = grow(outcome, record);
+              write(record, &model, &outcome, stop);
+            }
           if (!stop.empty())
             {
               result.stop_reason = stop;
@@ -324,7 +350,7 @@ namespace pumpd::coupling
     std::string Cycle::solve_global(ExchangeRecord &record, TipState &tip)
     {
       const auto t                = Clock::now();
-      tip                         = global.solve(*crack).front();
+      tip                         = global.solve(*crack, halvings).front();
       record.tip                  = tip.position;
       record.critical_load_factor = tip.critical_load_factor;
       record.dofs                 = global.n_dofs();
@@ -333,11 +359,23 @@ namespace pumpd::coupling
       return tip.k1 > 0. ? "" : "the crack closes under the load (K_I <= 0)";
     }
 
+    void Cycle::resolve(ExchangeRecord &record)
+    {
+      const auto  &tip       = crack->tips().front();
+      const double reach     = s.cycle.exchange.max_advance + s.pd.horizon;
+      const double clearance = std::min(clearance_ahead(scene.body, tip.position, tip.direction, reach, 0.5 * h),
+                                        boxes.smallest_hole_within_reach(tip.position, tip.direction));
+      halvings               = horizon_halvings(s.cycle.resolution, s.pd.horizon, clearance);
+      length_scale           = std::ldexp(1., -int(halvings));
+      pd.horizon             = length_scale * s.pd.horizon;
+      record.horizon         = pd.horizon;
+    }
+
     local::PdModel Cycle::pd_body(const TipState &tip, ExchangeRecord &record)
     {
       const auto t = Clock::now();
-      record.box   = boxes.place(tip.position, tip.direction);
-      local::PdModel model(material, s.pd.horizon, s.pd.horizon_over_spacing,
+      record.box   = boxes.place(tip.position, tip.direction, length_scale);
+      local::PdModel model(material, pd.horizon, pd.horizon_over_spacing,
                            local::Region{scene.body, record.box, {crack->vertices()}});
       record.pd_nodes                 = model.nodes().size();
       record.seconds_point_evaluation = seconds_since(t);
@@ -356,11 +394,12 @@ namespace pumpd::coupling
     ExchangeOutcome Cycle::exchange(const local::PdModel &model, const BoundaryTransfer &transfer, const TipState &tip,
                                     ExchangeRecord &record)
     {
-      const double allowed = std::min(controller.allowed_advance(scene.body.clearance(tip.position)),
-                                      max_length - record.crack_length);
+      const double allowed =
+        std::min(length_scale * controller.allowed_advance(scene.body.clearance(tip.position) / length_scale),
+                 max_length - record.crack_length);
       auto outcome = run_exchange(model, transfer, controller, tip, allowed,
                                   [&](const geometry::Polyline &path) { return !arrival_of(path).reason.empty(); },
-                                  s.pd, out);
+                                  pd, out);
       outcome.increment.path = truncate(outcome.increment.path, allowed);
       record.pd_iterations      = outcome.iterations;
       record.substeps           = outcome.states;
@@ -397,20 +436,56 @@ namespace pumpd::coupling
       return arrival.reason;
     }
 
-    void Cycle::write(const ExchangeRecord &record, const local::PdModel &model, const ExchangeOutcome &outcome,
+    bool Cycle::ligament_unresolved(const TipState &tip) const
+    {
+      const auto  &r        = s.cycle.resolution;
+      const double finest   = std::ldexp(s.pd.horizon, r.rule == "clearance" ? -int(r.max_halvings) : 0);
+      const double ligament = std::min(scene.body.ray_to_outline(tip.position, tip.direction),
+                                       scene.body.ray_to_holes(tip.position, tip.direction, 0.).t);
+      return ligament < r.clearance_over_horizon * finest;
+    }
+
+    std::string Cycle::grow_by_lefm(const TipState &tip, ExchangeRecord &record)
+    {
+      const double angle   = kink_angle(tip.k1, tip.k2);
+      const Point  n{-tip.direction.y, tip.direction.x};
+      const Point  e       = std::cos(angle) * tip.direction + std::sin(angle) * n;
+      const auto   arrival = arrival_of({tip.position, tip.position + pd.horizon * e});
+      for (std::size_t k = 1; k < arrival.path.size(); ++k)
+        if (geometry::norm(arrival.path[k] - crack->vertices().back()) > 1e-3 * h)
+          crack->grow(0, arrival.path[k]);
+      record.decision    = "lefm";
+      record.load_factor = 1.;
+      record.lambda      = tip.critical_load_factor;
+      record.k1          = tip.k1 * record.lambda;
+      record.k2          = tip.k2 * record.lambda;
+      record.advance     = crack->length() - record.crack_length;
+      global.scale_to(record.lambda);
+      std::tie(record.load, record.displacement) = global.report();
+      if (arrival.reason.empty())
+        return "";
+      return arrival.reason + " (the last ligament, narrower than " +
+             pumpd::to_text(s.cycle.resolution.clearance_over_horizon, 3) +
+             " horizons of the finest PD box, grown by LEFM: maximum hoop stress at G = G_c)";
+    }
+
+    void Cycle::write(const ExchangeRecord &record, const local::PdModel *model, const ExchangeOutcome *outcome,
                       const std::string &stop)
     {
       const std::size_t n    = record.exchange;
       const bool        last = !stop.empty() || n + 1 >= s.cycle.max_exchanges || crack->length() >= max_length - 1e-9;
       result.exchanges.push_back(record);
       write_row(steps, record);
-      if (outcome.branching.empty() && (outcome.decision == Decision::accept || outcome.decision == Decision::truncate))
+      const bool accepted = !outcome || (outcome->branching.empty() && (outcome->decision == Decision::accept ||
+                                                                        outcome->decision == Decision::truncate));
+      if (accepted)
         recorder.load_displacement(n, record.lambda, record.load, record.displacement, crack->length(),
                                    crack->vertices().back());
       if (n % s.cycle.output_interval == 0 || last)
         {
           recorder.global_state(global, double(n));
-          recorder.pd_state(model, outcome.state);
+          if (model)
+            recorder.pd_state(*model, outcome->state);
         }
       recorder.crack_path(crack->vertices());
       if (recorder.writes())
@@ -421,7 +496,7 @@ namespace pumpd::coupling
           state.finished    = !stop.empty();
           state.crack       = crack->vertices();
           state.boxes       = boxes.history();
-          state.refined_at  = global.refined_at();
+          state.refinements = global.refinements();
           write_cycle_checkpoint(checkpoint, state);
         }
 
@@ -435,10 +510,16 @@ namespace pumpd::coupling
       const auto  &box = record.box;
       out << "exchange " << std::setw(3) << n << "  lambda " << std::setprecision(4) << record.lambda << " ("
           << record.load_factor << " lambda_c)  crack " << crack->length() << " m  +" << 1e3 * record.advance
-          << " mm  tip " << to_text(crack->vertices().back()) << "  box [" << box.x_min << ", " << box.x_max << "] x ["
-          << box.y_min << ", " << box.y_max << "]" << (boxes.moved() ? " new" : "") << "  " << record.pd_nodes
-          << " PD nodes, " << record.substeps << " states, " << record.pd_iterations << " DR its  ETA <= " << std::fixed
-          << std::setprecision(0) << eta << " s" << std::defaultfloat << std::setprecision(6) << std::endl;
+          << " mm  tip " << to_text(crack->vertices().back()) << "  ";
+      if (model)
+        out << "box [" << box.x_min << ", " << box.x_max << "] x [" << box.y_min << ", " << box.y_max << "]"
+            << (boxes.moved() ? " new" : "") << "  delta " << 1e3 * record.horizon << " mm, " << record.pd_nodes
+            << " PD nodes, " << record.substeps << " states, " << record.pd_iterations << " DR its";
+      else
+        out << "LEFM increment (ligament below " << s.cycle.resolution.clearance_over_horizon
+            << " horizons of the finest box)";
+      out << "  ETA <= " << std::fixed << std::setprecision(0) << eta << " s" << std::defaultfloat
+          << std::setprecision(6) << std::endl;
     }
   } // namespace
 

@@ -24,6 +24,7 @@
 #include "global_problem.h"
 #include "growth_settings.h"
 #include "pd_settings.h"
+#include "resolution.h"
 #include "scene.h"
 
 namespace dealii
@@ -36,8 +37,9 @@ namespace pumpd::coupling
   /// The section `Global-local`: the box, the exchange, and the cycle's limits.
   struct CycleSettings
   {
-    BoxSettings      box; ///< its horizon and spacing come from the section Peridynamics
-    ExchangeSettings exchange;
+    BoxSettings        box; ///< its horizon and spacing come from the section Peridynamics
+    ExchangeSettings   exchange;
+    ResolutionSettings resolution; ///< the box's horizon: the section's, or halved near holes and edges
     unsigned int     max_exchanges      = 200;
     double           reference_box_area = 0.02258; ///< the fixed box of Ni et al. 2019 [m^2], for a metric
     unsigned int     output_interval    = 1;       ///< global and PD VTU every n exchanges
@@ -64,6 +66,7 @@ namespace pumpd::coupling
     geometry::Point tip;
     double          crack_length = 0., k1 = 0., k2 = 0.; ///< at lambda, before the increment
     double          advance = 0.;                        ///< [m]
+    double          horizon = 0.;                        ///< delta of the box [m]
     std::string     decision;                            ///< accept | truncate | ...
     geometry::Box   box;
     std::size_t     pd_nodes = 0, pd_iterations = 0, substeps = 0, repeats = 0;

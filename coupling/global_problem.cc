@@ -55,32 +55,32 @@ namespace pumpd::coupling
 
   GlobalProblem::~GlobalProblem() = default;
 
-  void GlobalProblem::refine_at(const std::vector<geometry::Point> &tips)
+  void GlobalProblem::refine(const Refinement &r)
   {
-    for (unsigned int l = 0; l < settings.refinement_levels; ++l)
+    const dealii::Point<2> at(r.at.x, r.at.y);
+    for (unsigned int l = 0; l < r.levels; ++l)
       {
         bool flagged = false;
         for (const auto &cell : tria->active_cell_iterators())
-          for (const auto &t : tips)
-            if (cell->level() < int(settings.refinement_levels) &&
-                cell->center().distance(dealii::Point<2>(t.x, t.y)) < settings.refinement_radius + 0.5 * cell->diameter())
-              {
-                cell->set_refine_flag();
-                flagged = true;
-              }
+          if (cell->level() < int(r.levels) &&
+              cell->center().distance(at) < settings.refinement_radius + 0.5 * cell->diameter())
+            {
+              cell->set_refine_flag();
+              flagged = true;
+            }
         if (!flagged)
           return;
         tria->execute_coarsening_and_refinement();
       }
   }
 
-  std::vector<TipState> GlobalProblem::solve(const global::Crack &crack)
+  std::vector<TipState> GlobalProblem::solve(const global::Crack &crack, unsigned int extra_levels)
   {
-    std::vector<geometry::Point> tips;
     for (const auto &t : crack.tips())
-      tips.push_back(t.position);
-    refine_at(tips);
-    history.insert(history.end(), tips.begin(), tips.end());
+      {
+        history.push_back({t.position, settings.refinement_levels + extra_levels});
+        refine(history.back());
+      }
     problem->set_crack(crack);
     problem->setup();
     problem->assemble();

@@ -48,6 +48,13 @@ namespace pumpd::coupling
     double          critical_load_factor = 0.; ///< lambda_c; infinity where K_I <= 0
   };
 
+  /// A refinement around a point: every cell within the refinement radius, `levels` times.
+  struct Refinement
+  {
+    geometry::Point at;
+    unsigned int    levels = 0;
+  };
+
   class GlobalProblem
   {
   public:
@@ -55,13 +62,14 @@ namespace pumpd::coupling
     GlobalProblem(const Scene &scene, const GlobalSettings &settings);
     ~GlobalProblem();
 
-    /// Refines the mesh around the crack's tips (it stays refined along the path), sets up the
-    /// enrichment and solves at lambda_ref: the state of every tip (in the crack's tip order).
-    std::vector<TipState> solve(const global::Crack &crack);
-    /// Refines around the given positions as solve() did (a resumed run replays its history).
-    void refine_at(const std::vector<geometry::Point> &tips);
-    /// The positions solve() refined at, in order.
-    const std::vector<geometry::Point> &refined_at() const { return history; }
+    /// Refines the mesh around the crack's tips (it stays refined along the path), the section's
+    /// levels plus `extra_levels`, sets up the enrichment and solves at lambda_ref: the state of
+    /// every tip (in the crack's tip order).
+    std::vector<TipState> solve(const global::Crack &crack, unsigned int extra_levels = 0);
+    /// Refines as solve() did (a resumed run replays its history).
+    void refine(const Refinement &r);
+    /// The refinements solve() made, in order.
+    const std::vector<Refinement> &refinements() const { return history; }
 
     /// Displacement per unit load factor at the points, each on its own side of the crack (one
     /// batched point evaluation). Call after solve() and before scale_to().
@@ -83,7 +91,7 @@ namespace pumpd::coupling
     GlobalSettings                                settings;
     std::unique_ptr<dealii::Triangulation<2, 2>>  tria;
     std::unique_ptr<global::EnrichedElasticity>   problem;
-    std::vector<geometry::Point>                  history;
+    std::vector<Refinement>                       history;
     double                                        lambda = 1.;
   };
 

@@ -66,10 +66,7 @@
 #include <streambuf>
 #include <string>
 
-#include "global_local.h"
-#include "metric.h"
-#include "parameters.h"
-#include "path_metrics.h"
+#include "cycle_study.h"
 
 using namespace pumpd;
 using geometry::Point;
@@ -77,162 +74,10 @@ using geometry::Polyline;
 
 namespace
 {
-  const double      not_a_number = std::numeric_limits<double>::quiet_NaN();
-  const std::string output_root  = PUMPD_BINARY_DIR "/study_coupling_output";
+  using namespace pumpd::study;
+  const std::string output       = "study_coupling_output";
   const double      prm_horizon  = 0.004; ///< the horizon of prm/ingraffea-case*.prm (checked)
   const double      budget_delta_2 = 900.; ///< [s] the delta = 0.002, m = 8 run at most (else m = 4)
-
-  /// Forwards everything to std::cout line by line; a line that run_global_local starts with
-  /// "pumpd-metric " (no case name) is shown as "  [run] ..." instead.
-  class RunOutput : public std::streambuf
-  {
-  public:
-    ~RunOutput() override { flush_line(); }
-
-  protected:
-    int overflow(int c) override
-    {
-      if (c == traits_type::eof())
-        return traits_type::not_eof(c);
-      line.push_back(char(c));
-      if (c == '\n')
-        flush_line();
-      return c;
-    }
-    int sync() override
-    {
-      flush_line();
-      return 0;
-    }
-
-  private:
-    void flush_line()
-    {
-      if (line.empty())
-        return;
-      const std::string tag = "pumpd-metric ";
-      if (line.compare(0, tag.size(), tag) == 0)
-        line = "  [run] " + line.substr(tag.size());
-      std::cout << line << std::flush;
-      line.clear();
-    }
-    std::string line;
-  };
-
-  void metric(const std::string &name, double value)
-  {
-    test::metric(name, value);
-    EXPECT_TRUE(std::isfinite(value)) << name << " = " << value;
-  }
-
-  coupling::Parameters from_prm(const std::string &scene)
-  {
-    return coupling::read_parameters("prm/" + scene);
-  }
-
-  /// The PD discretisation changed to (delta, m): the lengths of the box and of the exchange
-  /// controller scaled with delta / 0.004 (header comment), Minimum advance at least 2 h.
-  coupling::Parameters with_pd(coupling::Parameters p, double delta, int m)
-  {
-    const double s            = delta / p.pd.horizon;
-    auto        &c            = p.cycle;
-    p.pd.horizon              = delta;
-    p.pd.horizon_over_spacing = m;
-    c.box.size *= s;
-    c.box.margin *= s;
-    c.box.max_size *= s;
-    c.exchange.max_advance *= s;
-    c.exchange.near_distance *= s;
-    c.exchange.min_advance = std::max(s * c.exchange.min_advance, 2. * delta / m);
-    return p;
-  }
-
-  struct CycleRun
-  {
-    std::string                                name;
-    coupling::Parameters                       p;
-    std::optional<coupling::GlobalLocalResult> r; ///< empty if the run threw
-  };
-
-  Polyline initial_crack(const coupling::Parameters &p) { return coupling::build_scene(p.scene).crack(); }
-
-  CycleRun run(const std::string &name, coupling::Parameters p)
-  {
-    p.scene.output_directory = output_root + "/" + name;
-    std::filesystem::remove_all(p.scene.output_directory); // no stale checkpoint, no stale series
-    const auto &c = p.cycle;
-    std::cout << "\n=== " << name << ": delta " << p.pd.horizon << " m, m = " << p.pd.horizon_over_spacing << " (h "
-              << p.pd.spacing() << " m), box " << c.box.size << " m (margin " << c.box.margin << ", max "
-              << c.box.max_size << "), advance " << c.exchange.min_advance << " ... " << c.exchange.max_advance
-              << " m (near " << c.exchange.near_distance << " m), max exchanges " << c.max_exchanges << ", output "
-              << p.scene.output_directory << std::endl;
-    CycleRun result{name, p, std::nullopt};
-    RunOutput    buffer;
-    std::ostream progress(&buffer);
-    try
-      {
-        result.r = coupling::run_global_local(coupling::build_scene(p.scene), p.global_local_settings(), progress);
-      }
-    catch (const std::exception &e)
-      {
-        progress.flush();
-        std::cout << "=== " << name << " FAILED, exception: " << e.what() << std::endl;
-        ADD_FAILURE() << name << ": " << e.what();
-        return result;
-      }
-    progress.flush();
-    const auto  &r     = *result.r;
-    const double grown = geometry::length(r.path) - geometry::length(initial_crack(p));
-    std::cout << "=== " << name << ": " << r.exchanges.size() << " exchanges, crack " << geometry::length(r.path)
-              << " m (grown " << grown << " m), tip (" << r.path.back().x << ", " << r.path.back().y
-              << "), stop reason: " << r.stop_reason << "; " << r.seconds << " s" << std::endl;
-    return result;
-  }
-
-  double grown(const CycleRun &run)
-  {
-    return run.r ? geometry::length(run.r->path) - geometry::length(initial_crack(run.p)) : not_a_number;
-  }
-
-  /// The path from its vertex nearest the initial tip on (the grown part, that vertex included).
-  Polyline grown_part(const CycleRun &run)
-  {
-    const Point   tip  = initial_crack(run.p).back();
-    const auto   &path = run.r->path;
-    std::size_t   k    = 0;
-    for (std::size_t i = 1; i < path.size(); ++i)
-      if (geometry::norm(path[i] - tip) < geometry::norm(path[k] - tip))
-        k = i;
-    return Polyline(path.begin() + std::ptrdiff_t(k), path.end());
-  }
-
-  /// Symmetric mean distance [m] between the grown parts of two paths, the longer cut at the
-  /// point nearest the shorter one's tip; NaN if either run failed.
-  double path_change(const CycleRun &a, const CycleRun &b)
-  {
-    if (!a.r || !b.r)
-      return not_a_number;
-    Polyline pa = grown_part(a), pb = grown_part(b);
-    if (geometry::length(pa) > geometry::length(pb))
-      pa = coupling::up_to_nearest(pa, pb.back());
-    else
-      pb = coupling::up_to_nearest(pb, pa.back());
-    const auto d = coupling::path_distance(pa, pb, 5e-5);
-    std::cout << "  " << a.name << " vs " << b.name << ": compared over " << geometry::length(pa) << " / "
-              << geometry::length(pb) << " m of grown path; mean " << 1e3 * d.mean << " mm, Hausdorff "
-              << 1e3 * d.hausdorff << " mm" << std::endl;
-    return d.mean;
-  }
-
-  void sanity(const CycleRun &run)
-  {
-    EXPECT_TRUE(run.r.has_value()) << run.name << " threw";
-    if (run.r)
-      {
-        EXPECT_GT(grown(run), 0.02) << run.name << ": the crack grew only " << grown(run) << " m ("
-                                    << run.r->stop_reason << ")";
-      }
-  }
 
   /// Metrics 2 (PD work) of a case.
   void work_metrics(const std::string &prefix, const CycleRun &run)
@@ -297,7 +142,7 @@ namespace
       {
         auto p = from_prm("ingraffea-case" + std::to_string(n) + ".prm");
         EXPECT_DOUBLE_EQ(p.pd.horizon, prm_horizon) << "the scaling of the convergence study assumes it";
-        it = runs().emplace(name, run(name, p)).first;
+        it = runs().emplace(name, run(output, name, p)).first;
       }
     return it->second;
   }
@@ -355,7 +200,7 @@ TEST(CouplingStudy, PathConvergenceCaseII)
   sanity(m8);
 
   // Under the spacing.
-  const CycleRun m4 = run("case2_delta4_m4", with_pd(prm, 0.004, 4));
+  const CycleRun m4 = run(output, "case2_delta4_m4", with_pd(prm, 0.004, 4));
   sanity(m4);
   metric("coupling.path_change_m4_vs_m8_mm", 1e3 * path_change(m4, m8));
 
@@ -364,7 +209,7 @@ TEST(CouplingStudy, PathConvergenceCaseII)
   {
     auto probe_p                = with_pd(prm, 0.002, 8);
     probe_p.cycle.max_exchanges = 1;
-    const CycleRun probe  = run("case2_delta2_m8_probe", probe_p);
+    const CycleRun probe  = run(output, "case2_delta2_m8_probe", probe_p);
     if (probe.r && m8.r && !probe.r->exchanges.empty() && !m8.r->exchanges.empty())
       {
         const double t1_2     = exchange_seconds(probe.r->exchanges.front());
@@ -386,10 +231,10 @@ TEST(CouplingStudy, PathConvergenceCaseII)
                                                            " (delta = 0.002, m = 8 over the budget or unmeasured)")
             << std::endl;
   const CycleRun &reference = m == 8 ? m8 : m4;
-  const CycleRun  d8        = run("case2_delta8_m" + std::to_string(m), with_pd(prm, 0.008, m));
+  const CycleRun  d8        = run(output, "case2_delta8_m" + std::to_string(m), with_pd(prm, 0.008, m));
   sanity(d8);
   metric("coupling.path_change_delta_8_vs_4_mm", 1e3 * path_change(d8, reference));
-  const CycleRun d2 = run("case2_delta2_m" + std::to_string(m), with_pd(prm, 0.002, m));
+  const CycleRun d2 = run(output, "case2_delta2_m" + std::to_string(m), with_pd(prm, 0.002, m));
   sanity(d2);
   metric("coupling.path_change_delta_2_vs_4_mm", 1e3 * path_change(d2, reference));
   std::cout << "the horizon series ran at m = " << m << std::endl;

@@ -20,7 +20,7 @@ TEST(CycleCheckpoint, RoundTripIsExact)
   s.finished    = true;
   s.crack       = {{0.1016, 0.}, {0.1016, 0.0254}, {0.10184914583, 0.02683101623}};
   s.boxes       = {{0.0855, 0.0155, 0.118, 0.048}, {0.0905, 0.0265, 0.123, 0.059}};
-  s.refined_at  = {{0.1016, 0.0254}, {0.10184914583, 0.02683101623}};
+  s.refinements = {{{0.1016, 0.0254}, 2}, {{0.10184914583, 0.02683101623}, 3}};
   const std::string file = (dir / "checkpoint.h5").string();
   write_cycle_checkpoint(file, s);
   const auto r = read_cycle_checkpoint(file);
@@ -35,8 +35,9 @@ TEST(CycleCheckpoint, RoundTripIsExact)
     }
   ASSERT_EQ(r.boxes.size(), s.boxes.size());
   EXPECT_EQ(r.boxes[1].y_max, s.boxes[1].y_max);
-  ASSERT_EQ(r.refined_at.size(), 2u);
-  EXPECT_EQ(r.refined_at[1].y, s.refined_at[1].y);
+  ASSERT_EQ(r.refinements.size(), 2u);
+  EXPECT_EQ(r.refinements[1].at.y, s.refinements[1].at.y);
+  EXPECT_EQ(r.refinements[1].levels, 3u);
   std::filesystem::remove_all(dir);
 }
 

@@ -1,0 +1,44 @@
+// The resolution of each PD box, chosen by what lies ahead of the crack tip (DESIGN.md,
+// coupling/; issue 13). A PD box resolves the tip with its horizon delta: the tip's family (one
+// horizon), and the surface layer of a hole or edge, where the families miss bonds and the
+// material is softer than the continuum it is coupled to (one horizon, Le & Bobaru 2018). The
+// crack's path near a free surface is modelled, not an artefact of the two overlapping, when a
+// free horizon of bulk lies between them: clearance >= 3 delta. So the box's horizon is
+//   delta_k = delta / 2^k,  k the least number of halvings (at most `max_halvings`) with
+//   c >= clearance_over_horizon * delta_k,
+// c the clearance (to holes and the outline) of the path the crack may take in this exchange:
+// the segment from the tip along its direction over the maximum advance plus one horizon.
+// Each box is its own PD problem, so delta changes from one exchange to the next without the
+// ghost forces of a variable horizon within one body (Silling, Littlewood, Seleson 2015). The
+// box, its margin and the advance per exchange scale with delta_k; the spacing is delta_k / m.
+#pragma once
+
+#include <string>
+
+#include "body.h"
+
+namespace dealii
+{
+  class ParameterHandler;
+}
+
+namespace pumpd::coupling
+{
+  /// The subsection `Resolution` of `Global-local`.
+  struct ResolutionSettings
+  {
+    std::string  rule                   = "clearance"; ///< clearance | fixed (the section Peridynamics' horizon)
+    double       clearance_over_horizon = 3.;          ///< c / delta_k at least
+    unsigned int max_halvings           = 1;
+
+    void add_parameters(dealii::ParameterHandler &prm);
+  };
+
+  /// Least distance from a hole or the outline along the segment tip + s d, s in [0, reach],
+  /// sampled every `step` [m].
+  double clearance_ahead(const geometry::Body &body, geometry::Point tip, geometry::Point direction, double reach,
+                         double step);
+
+  /// k, delta_k = delta / 2^k, for a path with clearance c ahead (0 under the fixed rule).
+  unsigned int horizon_halvings(const ResolutionSettings &settings, double horizon, double clearance);
+} // namespace pumpd::coupling

@@ -1,0 +1,122 @@
+// Issue 13: the right crack path at the default settings, and what it costs. Label study (not in
+// CI): the runs take minutes each. Every run starts from prm/ingraffea-caseN.prm (the default
+// settings: the resolution rule of coupling/resolution.h); outputs under
+// <build>/tests/bench/study_resolution_output/<run>/.
+//
+// 1. Cases I-III at the default: where the crack ends (coupling.case3.tip_x_mm, tip_y_mm: the
+//    middle hole is centred at (152.4, 120.65) mm; coupling.case1.tip_y_mm: the top edge is at
+//    203.2 mm), PD node-steps (coupling.caseN.pd_node_steps), seconds.
+// 2. The rule's own convergence: each case again with every horizon the rule chooses halved. The
+//    section's horizon is halved, Clearance over horizon doubled (so the rule switches where it
+//    did, each box at half its horizon), the box and exchange lengths halved (study::with_pd), one
+//    more global refinement level at the tip. coupling.caseN.path_change_half_horizon_mm: the
+//    symmetric mean distance of the grown parts (study::path_change), target <= 1 mm.
+// 3. Cost ratios, each of two runs in this process: trade.coupled_over_lefm_time (Case II by the
+//    cycle over Case II by LEFM growth, prm/ingraffea-case2-lefm.prm) and
+//    coupling.case3.default_over_fixed4mm_time (Case III at the default over Case III with the
+//    fixed 4 mm horizon of the section, Rule = fixed).
+#include <gtest/gtest.h>
+
+#include <deal.II/base/multithread_info.h>
+
+#include <chrono>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <string>
+
+#include "cycle_study.h"
+#include "lefm_growth.h"
+
+using namespace pumpd;
+using namespace pumpd::study;
+
+namespace
+{
+  const std::string output = "study_resolution_output";
+
+  std::map<int, CycleRun> &default_runs()
+  {
+    static std::map<int, CycleRun> r;
+    return r;
+  }
+
+  const CycleRun &default_run(int n)
+  {
+    auto it = default_runs().find(n);
+    if (it == default_runs().end())
+      it = default_runs().emplace(n, run(output, "case" + std::to_string(n), from_prm("ingraffea-case" + std::to_string(n) + ".prm"))).first;
+    return it->second;
+  }
+
+  /// Every horizon the rule chooses halved (header, 2).
+  coupling::Parameters half_horizon(coupling::Parameters p)
+  {
+    p = with_pd(p, 0.5 * p.pd.horizon, p.pd.horizon_over_spacing);
+    p.cycle.resolution.clearance_over_horizon *= 2.;
+    p.global.refinement_levels += 1;
+    return p;
+  }
+
+  void case_metrics(int n)
+  {
+    const CycleRun   &c      = default_run(n);
+    const std::string prefix = "coupling.case" + std::to_string(n);
+    sanity(c);
+    std::cout << "Case " << n << " stop reason: " << (c.r ? c.r->stop_reason : "(the run threw)") << std::endl;
+    if (n == 3)
+      {
+        metric(prefix + ".tip_x_mm", c.r ? 1e3 * c.r->path.back().x : not_a_number);
+        metric(prefix + ".tip_y_mm", c.r ? 1e3 * c.r->path.back().y : not_a_number);
+      }
+    if (n == 1)
+      metric(prefix + ".tip_y_mm", c.r ? 1e3 * c.r->path.back().y : not_a_number);
+    metric(prefix + ".pd_node_steps", c.r ? c.r->pd_node_steps : not_a_number);
+    metric(prefix + ".seconds_total", c.r ? c.r->seconds : not_a_number);
+
+    const CycleRun half = run(output, "case" + std::to_string(n) + "_half_horizon",
+                              half_horizon(from_prm("ingraffea-case" + std::to_string(n) + ".prm")));
+    sanity(half);
+    metric(prefix + ".path_change_half_horizon_mm", 1e3 * path_change(half, c));
+    metric(prefix + ".half_horizon_seconds_total", half.r ? half.r->seconds : not_a_number);
+  }
+} // namespace
+
+TEST(ResolutionStudy, CaseI)
+{
+  dealii::MultithreadInfo::set_thread_limit(1);
+  case_metrics(1);
+}
+
+TEST(ResolutionStudy, CaseII)
+{
+  dealii::MultithreadInfo::set_thread_limit(1);
+  case_metrics(2);
+}
+
+TEST(ResolutionStudy, CaseIII)
+{
+  dealii::MultithreadInfo::set_thread_limit(1);
+  case_metrics(3);
+}
+
+TEST(ResolutionStudy, CostAgainstTheFixedHorizonAndLefm)
+{
+  dealii::MultithreadInfo::set_thread_limit(1);
+  auto fixed                  = from_prm("ingraffea-case3.prm");
+  fixed.cycle.resolution.rule = "fixed";
+  const CycleRun case3_fixed  = run(output, "case3_fixed_4mm", fixed);
+  const CycleRun &case3       = default_run(3);
+  metric("coupling.case3.default_over_fixed4mm_time",
+         case3.r && case3_fixed.r ? case3.r->seconds / case3_fixed.r->seconds : not_a_number);
+
+  auto lefm                     = from_prm("ingraffea-case2-lefm.prm");
+  lefm.scene.output_directory   = std::string(PUMPD_BINARY_DIR) + "/" + output + "/case2_lefm";
+  std::ostringstream quiet;
+  const auto         r          = coupling::run_lefm_growth(coupling::build_scene(lefm.scene), lefm.lefm_growth_settings(), quiet);
+  const CycleRun    &case2      = default_run(2);
+  std::cout << "Case II by LEFM growth: " << r.seconds << " s, tip (" << r.path.back().x << ", " << r.path.back().y
+            << ")" << std::endl;
+  metric("coupling.case2.lefm_seconds_total", r.seconds);
+  metric("trade.coupled_over_lefm_time", case2.r ? case2.r->seconds / r.seconds : not_a_number);
+}

@@ -1,0 +1,72 @@
+// The resolution rule (coupling/resolution.h): the clearance of the path ahead of a tip, the
+// number of halvings it asks for, and the box of a halved horizon (box_policy.h).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "box_policy.h"
+#include "resolution.h"
+
+using namespace pumpd;
+using geometry::Body;
+using geometry::Point;
+
+namespace
+{
+  // The beam of Ingraffea's Case III, with its lower hole only: radius 6.35 mm at (152.4, 69.85) mm.
+  const Body beam{{0., 0., 0.508, 0.2032}, {{{0.1524, 0.06985}, 0.00635}}};
+} // namespace
+
+TEST(Resolution, ClearanceAheadIsTheDistanceOfTheSegmentFromTheHole)
+{
+  // A tip 30 mm left of the hole's centre heading right: the segment's end, 12 mm on, is
+  // 18 mm from the centre, 11.65 mm from the rim; the tip itself is 23.65 mm from the rim and
+  // 69.85 mm from the bottom edge.
+  const Point tip{0.1224, 0.06985};
+  EXPECT_NEAR(coupling::clearance_ahead(beam, tip, {1., 0.}, 0.012, 0.0005), 0.018 - 0.00635, 1e-9);
+  // Heading up, away from the hole: the tip's own clearance (the hole, 23.65 mm) is the least.
+  EXPECT_NEAR(coupling::clearance_ahead(beam, tip, {0., 1.}, 0.012, 0.0005), 0.030 - 0.00635, 1e-9);
+}
+
+TEST(Resolution, HalvesTheHorizonUntilTheClearanceHoldsThreeHorizons)
+{
+  coupling::ResolutionSettings s; // clearance rule, 3 horizons, at most one halving
+  const double                 delta = 0.004;
+  EXPECT_EQ(coupling::horizon_halvings(s, delta, 0.0121), 0u); // >= 12 mm: the section's 4 mm
+  EXPECT_EQ(coupling::horizon_halvings(s, delta, 0.0119), 1u); // 2 mm
+  EXPECT_EQ(coupling::horizon_halvings(s, delta, 0.001), 1u);  // at most one halving
+  s.max_halvings = 3;
+  EXPECT_EQ(coupling::horizon_halvings(s, delta, 0.0059), 2u); // 1 mm: 3 mm <= 5.9 mm < 6 mm
+  EXPECT_EQ(coupling::horizon_halvings(s, delta, 0.), 3u);
+  s.rule = "fixed";
+  EXPECT_EQ(coupling::horizon_halvings(s, delta, 0.), 0u);
+}
+
+TEST(Resolution, AHalvedBoxHasHalfTheSideAndIsNeverKeptAcrossScales)
+{
+  coupling::BoxSettings b;
+  b.horizon = 0.004, b.spacing = 0.0005, b.size = 0.032, b.margin = 0.008, b.max_size = 0.064;
+  coupling::BoxPolicy policy(beam, b);
+  const Point         tip{0.1016, 0.04}, up{0., 1.};
+  const auto          coarse = policy.place(tip, up);
+  EXPECT_NEAR(coarse.width(), 0.032, 0.0005 + 1e-12);
+  const auto fine = policy.place(tip, up, 0.5);
+  EXPECT_TRUE(policy.moved());
+  EXPECT_NEAR(fine.width(), 0.016, 0.00025 + 1e-12);
+  EXPECT_NEAR(fine.height(), 0.016, 0.00025 + 1e-12);
+  policy.place(tip, up, 0.5);
+  EXPECT_FALSE(policy.moved()); // same scale, the tip has room: kept
+  policy.place(tip, up);
+  EXPECT_TRUE(policy.moved());
+}
+
+TEST(Resolution, AHoleTheBoxReachesCountsWithItsRadius)
+{
+  coupling::BoxSettings b;
+  b.horizon = 0.004, b.spacing = 0.0005, b.size = 0.032, b.margin = 0.008, b.max_size = 0.064;
+  const coupling::BoxPolicy policy(beam, b);
+  // The box around a tip 20 mm left of the hole's centre, heading up, reaches the hole (its side
+  // 16 mm to the right plus 2 horizons): the hole's radius. Far below it, nothing.
+  EXPECT_NEAR(policy.smallest_hole_within_reach({0.1324, 0.06}, {0., 1.}), 0.00635, 1e-12);
+  EXPECT_TRUE(std::isinf(policy.smallest_hole_within_reach({0.1324, 0.01}, {0., 1.})));
+}
