@@ -161,15 +161,19 @@ namespace pumpd::local
     };
   } // namespace
 
-  // Kilic & Madenci (2010): fictitious density Lambda from the stiffness row sums (time step 1),
-  // adaptive damping c = 2 sqrt(u.K1 u / u.u) from the local diagonal stiffness
-  // K1_ii = -(f_i^n - f_i^{n-1}) / (Lambda v_i^{n-1/2}).
+  // Kilic & Madenci (2010) with time step 1: adaptive damping c = 2 sqrt(u.K1 u / u.u) from the
+  // local diagonal stiffness K1_ii = -(f_i^n - f_i^{n-1}) / (rho v_i^{n-1/2}).
+  // Fictitious density rho = Lambda / 4, the least the step allows: central differences are stable
+  // for lambda_max(K) <= 4 rho, and lambda_max(K) <= Lambda, since no bond's tangent exceeds its
+  // linear stiffness c = a / |xi| and u.K u = sum_bonds c (e.(u_j - u_i))^2 <= 2 sum_i u_i.(sum_j c
+  // e e^T) u_i <= Lambda |u|^2 (over the full stencil, sum_j c e e^T = Lambda / 2 I).
   RelaxationResult DynamicRelaxation::solve(State &s, const Servo &servo) const
   {
     const auto       &nodes  = model.nodes();
     const auto       &free_x = model.free_mask_x();
     const auto       &free_y = model.free_mask_y();
     const double      lambda = model.stiffness_scale();
+    const double      rho    = 0.25 * lambda;
     const std::size_t n      = s.ux.size();
     std::vector<double> fx_old(n, 0.), fy_old(n, 0.);
 
@@ -195,15 +199,15 @@ namespace pumpd::local
           }
         for (std::size_t i : nodes)
           {
-            if (it == 0) // v^{1/2} = F^0 / (2 Lambda)
+            if (it == 0) // v^{1/2} = F^0 / (2 rho)
               {
-                s.vx[i] = free_x[i] * s.fx[i] / (2. * lambda);
-                s.vy[i] = free_y[i] * s.fy[i] / (2. * lambda);
+                s.vx[i] = free_x[i] * s.fx[i] / (2. * rho);
+                s.vy[i] = free_y[i] * s.fy[i] / (2. * rho);
               }
             else
               {
-                s.vx[i] = free_x[i] * ((2. - damping) * s.vx[i] + 2. * s.fx[i] / lambda) / (2. + damping);
-                s.vy[i] = free_y[i] * ((2. - damping) * s.vy[i] + 2. * s.fy[i] / lambda) / (2. + damping);
+                s.vx[i] = free_x[i] * ((2. - damping) * s.vx[i] + 2. * s.fx[i] / rho) / (2. + damping);
+                s.vy[i] = free_y[i] * ((2. - damping) * s.vy[i] + 2. * s.fy[i] / rho) / (2. + damping);
               }
             s.ux[i] += s.vx[i];
             s.uy[i] += s.vy[i];
@@ -220,7 +224,7 @@ namespace pumpd::local
             const auto local = [&](double f, double f0, double v, double u) {
               if (v == 0.)
                 return;
-              const double k1 = -(f - f0) / (lambda * v);
+              const double k1 = -(f - f0) / (rho * v);
               num += u * k1 * u;
               den += u * u;
             };
