@@ -6,6 +6,7 @@
 //   global_problem.h      XFEM on the whole body: tip states per unit load, the critical load
 //   lefm_growth.h         LEFM crack growth (XFEM + maximum hoop stress, no PD)
 //   global_local.h        the global-local cycle: XFEM drives a PD box at the tip
+//     resolution.h          the horizon of each box, chosen by the clearance and the holes ahead
 //     box_policy.h          where the PD box goes: ahead of the tip, grown for holes, clipped
 //     boundary_transfer.h   the mapping: the global displacement onto a box's nodes
 //     exchange.h            the scheme: PD states along the load, judged by the controller
@@ -35,4 +36,5 @@
 #include "path_metrics.h"
 #include "pd_edge_crack.h"
 #include "recorder.h"
+#include "resolution.h"
 #include "scene.h"
