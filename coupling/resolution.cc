@@ -12,8 +12,9 @@ namespace pumpd::coupling
     prm.enter_subsection("Resolution");
     prm.add_parameter("Rule", rule,
                       "clearance: each PD box halves the horizon (and spacing, box, advance) until the path ahead of "
-                      "the tip keeps Clearance over horizon horizons from every hole and the outline, at most Maximum "
-                      "halvings times; fixed: every box has the horizon of the section Peridynamics.",
+                      "the tip keeps Clearance over horizon horizons from every hole and the outline, and every hole "
+                      "the box reaches holds as many within its radius, at most Maximum halvings times; fixed: every "
+                      "box has the horizon of the section Peridynamics.",
                       dealii::Patterns::Selection("clearance|fixed"));
     prm.add_parameter("Clearance over horizon", clearance_over_horizon,
                       "The clearance of the path ahead, in horizons of the box, at least (3: the tip's family, a free "

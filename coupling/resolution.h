@@ -3,11 +3,15 @@
 // horizon), and the surface layer of a hole or edge, where the families miss bonds and the
 // material is softer than the continuum it is coupled to (one horizon, Le & Bobaru 2018). The
 // crack's path near a free surface is modelled, not an artefact of the two overlapping, when a
-// free horizon of bulk lies between them: clearance >= 3 delta. So the box's horizon is
+// free horizon of bulk lies between them: clearance >= 3 delta. A hole's stress concentration
+// decays over its radius R, which the box resolves by the same count: R >= 3 delta. So the box's
+// horizon is
 //   delta_k = delta / 2^k,  k the least number of halvings (at most `max_halvings`) with
 //   c >= clearance_over_horizon * delta_k,
-// c the clearance (to holes and the outline) of the path the crack may take in this exchange:
-// the segment from the tip along its direction over the maximum advance plus one horizon.
+// c the least of the clearance (to holes and the outline) of the path the crack may take in this
+// exchange (the segment from the tip along its direction over the maximum advance plus one
+// horizon) and the radius of every hole the box at the section's horizon reaches
+// (BoxPolicy::smallest_hole_within_reach).
 // Each box is its own PD problem, so delta changes from one exchange to the next without the
 // ghost forces of a variable horizon within one body (Silling, Littlewood, Seleson 2015). The
 // box, its margin and the advance per exchange scale with delta_k; the spacing is delta_k / m.
