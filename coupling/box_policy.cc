@@ -120,19 +120,22 @@ namespace pumpd::coupling
     return box;
   }
 
+  void BoxPolicy::rescale(double scale)
+  {
+    s          = unscaled;
+    s.horizon  = scale * unscaled.horizon;
+    s.spacing  = scale * unscaled.spacing;
+    s.size     = scale * unscaled.size;
+    s.margin   = scale * unscaled.margin;
+    s.max_size = scale * unscaled.max_size;
+    last_scale = scale;
+  }
+
   Box BoxPolicy::place(Point tip, Point d, double scale)
   {
     const bool rescaled = scale != last_scale;
     if (rescaled)
-      {
-        s          = unscaled;
-        s.horizon  = scale * unscaled.horizon;
-        s.spacing  = scale * unscaled.spacing;
-        s.size     = scale * unscaled.size;
-        s.margin   = scale * unscaled.margin;
-        s.max_size = scale * unscaled.max_size;
-        last_scale = scale;
-      }
+      rescale(scale);
     if (!boxes.empty() && !rescaled && keeps(boxes.back(), tip, d))
       {
         last_moved = false;
@@ -144,8 +147,9 @@ namespace pumpd::coupling
     return boxes.back();
   }
 
-  void BoxPolicy::restore(const std::vector<Box> &history)
+  void BoxPolicy::restore(const std::vector<Box> &history, double scale)
   {
     boxes = history;
+    rescale(scale);
   }
 } // namespace pumpd::coupling

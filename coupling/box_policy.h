@@ -44,11 +44,13 @@ namespace pumpd::coupling
     /// True if the last place() made a new box.
     bool moved() const { return last_moved; }
     const std::vector<geometry::Box> &history() const { return boxes; }
-    /// Continue after a restart with the boxes recorded so far.
-    void restore(const std::vector<geometry::Box> &history);
+    /// Continue after a restart with the boxes recorded so far, the last of them placed at `scale`.
+    void restore(const std::vector<geometry::Box> &history, double scale = 1.);
 
   private:
     bool          keeps(const geometry::Box &box, geometry::Point tip, geometry::Point direction) const;
+    /// The settings of place() at `scale`: every length of the given ones times it.
+    void          rescale(double scale);
     geometry::Box fitted(geometry::Box box) const;
 
     geometry::Body             body;

@@ -265,7 +265,10 @@ namespace pumpd::coupling
           crack.emplace(state.crack, scene.body, 1e-8 * std::max(scene.body.bounding_box().width(), scene.body.bounding_box().height()));
           for (const auto &r : state.refinements)
             global.refine(r);
-          boxes.restore(state.boxes);
+          // The last exchange's halvings: its refinement's levels beyond the section's.
+          const int last_halvings =
+            state.refinements.empty() ? 0 : int(state.refinements.back().levels) - int(s.global.refinement_levels);
+          boxes.restore(state.boxes, std::ldexp(1., -std::max(0, last_halvings)));
           controller.restore(state.load_factor);
           out << "resuming after exchange " << state.exchanges << ": crack " << crack->length() << " m\n";
         }

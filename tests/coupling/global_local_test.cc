@@ -85,3 +85,36 @@ TEST(GlobalLocal, ResumedRunMatchesTheUninterruptedOne)
     }
   EXPECT_EQ(b.exchanges.size(), 2u);
 }
+
+// The same with every box at half the horizon (Clearance over horizon at its largest, 20: no
+// clearance in the beam holds 20 horizons of 4 mm), resumed after 2 exchanges: the third keeps
+// the halved box of the second in the uninterrupted run, and so must the resumed one.
+TEST(GlobalLocal, ResumedRunWithHalvedBoxesMatchesTheUninterruptedOne)
+{
+  auto whole = coarse("global_local_halved_whole", 5);
+  whole.cycle.resolution.clearance_over_horizon = 20.;
+  const auto a = run(whole);
+  auto part    = coarse("global_local_halved_part", 2);
+  part.cycle.resolution.clearance_over_horizon = 20.;
+  run(part);
+  part.cycle.max_exchanges = 5;
+  part.cycle.resume        = true;
+  const auto b             = run(part);
+  ASSERT_EQ(a.exchanges.size(), 5u);
+  for (const auto &e : a.exchanges)
+    EXPECT_EQ(e.horizon, 0.5 * whole.pd.horizon);
+  ASSERT_GE(a.boxes.size(), 3u);
+  EXPECT_EQ(a.boxes[2].x_min, a.boxes[1].x_min); // kept: the case this test is about
+  ASSERT_EQ(a.boxes.size(), b.boxes.size());
+  for (std::size_t k = 0; k < a.boxes.size(); ++k)
+    {
+      EXPECT_EQ(a.boxes[k].x_min, b.boxes[k].x_min) << k;
+      EXPECT_EQ(a.boxes[k].y_max, b.boxes[k].y_max) << k;
+    }
+  ASSERT_EQ(a.path.size(), b.path.size());
+  for (std::size_t k = 0; k < a.path.size(); ++k)
+    {
+      EXPECT_EQ(a.path[k].x, b.path[k].x) << k;
+      EXPECT_EQ(a.path[k].y, b.path[k].y) << k;
+    }
+}
