@@ -203,6 +203,8 @@ namespace pumpd::coupling
       /// The result: path, boxes, distances from the reference path; the summary metrics.
       GlobalLocalResult finish();
 
+      /// The box's lengths over the section's: 2^-halvings.
+      double length_scale() const { return std::ldexp(1., -int(halvings)); }
       /// Where a grown path ends: a hole within its margin, or the outline or a hole within a horizon.
       Arrival arrival_of(const geometry::Polyline &path) const
       {
@@ -216,7 +218,6 @@ namespace pumpd::coupling
       const local::MaterialParameters material;
       PeridynamicsSettings            pd;                 ///< of this exchange's box
       unsigned int                    halvings     = 0;   ///< its horizon: the section's / 2^halvings
-      double                          length_scale = 1.;  ///< 2^-halvings
       std::optional<global::Crack>    crack;
       GlobalProblem                   global;
       BoxPolicy                       boxes;
@@ -369,15 +370,14 @@ namespace pumpd::coupling
       const double clearance = std::min(clearance_ahead(scene.body, tip.position, tip.direction, reach, 0.5 * h),
                                         boxes.smallest_hole_within_reach(tip.position, tip.direction));
       halvings               = horizon_halvings(s.cycle.resolution, s.pd.horizon, clearance);
-      length_scale           = std::ldexp(1., -int(halvings));
-      pd.horizon             = length_scale * s.pd.horizon;
+      pd.horizon             = length_scale() * s.pd.horizon;
       record.horizon         = pd.horizon;
     }
 
     local::PdModel Cycle::pd_body(const TipState &tip, ExchangeRecord &record)
     {
       const auto t = Clock::now();
-      record.box   = boxes.place(tip.position, tip.direction, length_scale);
+      record.box   = boxes.place(tip.position, tip.direction, length_scale());
       local::PdModel model(material, pd.horizon, pd.horizon_over_spacing,
                            local::Region{scene.body, record.box, {crack->vertices()}});
       record.pd_nodes                 = model.nodes().size();
@@ -398,7 +398,7 @@ namespace pumpd::coupling
                                     ExchangeRecord &record)
     {
       const double allowed =
-        std::min(length_scale * controller.allowed_advance(scene.body.clearance(tip.position) / length_scale),
+        std::min(length_scale() * controller.allowed_advance(scene.body.clearance(tip.position) / length_scale()),
                  max_length - record.crack_length);
       auto outcome = run_exchange(model, transfer, controller, tip, allowed,
                                   [&](const geometry::Polyline &path) { return !arrival_of(path).reason.empty(); },
