@@ -6,9 +6,12 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <cstdlib>
 #include <iostream>
 #include <sstream>
 #include <string>
+
+#include <unistd.h>
 
 #include "error.h"
 #include "parameters.h"
@@ -19,10 +22,23 @@ namespace
                       "  Runs the scene described by a deal.II ParameterHandler file (a specimen: its mesh, material,\n"
                       "  boundary conditions and cracks; and the method that computes it); see prm/ for examples\n"
                       "  and --print-parameters for every parameter, its default and its allowed range.\n";
+  /// The PD kernel's OpenMP threads meet at barriers several times per force evaluation. A thread
+  /// that spins there holds its core while its sibling waits for one: on a machine shared with
+  /// other work the PD states then take several times as long (docs/peridynamics.md). libgomp
+  /// reads its waiting policy once, at start-up, so pumpd starts itself again with the passive
+  /// policy unless the user chose one.
+  void wait_passively_at_barriers(char **argv)
+  {
+    if (std::getenv("OMP_WAIT_POLICY") != nullptr)
+      return;
+    setenv("OMP_WAIT_POLICY", "passive", 1);
+    execv("/proc/self/exe", argv);
+  }
 } // namespace
 
 int main(int argc, char **argv)
 {
+  wait_passively_at_barriers(argv);
   // MPI (one process) for the Trilinos solvers.
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const std::string arg = argc > 1 ? argv[1] : "--help";
