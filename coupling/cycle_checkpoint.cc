@@ -44,7 +44,8 @@ namespace pumpd::coupling
     write_doubles(file, "crack", crack);
     write_doubles(file, "boxes", boxes);
     write_doubles(file, "refinements", refined);
-    write_doubles(file, "cycle", {double(state.exchanges), state.load_factor, state.finished ? 1. : 0.});
+    write_doubles(file, "cycle",
+                  {double(state.exchanges), state.load_factor, state.finished ? 1. : 0., double(state.halvings)});
     H5Fclose(file);
     std::filesystem::rename(partial, path);
   }
@@ -69,7 +70,7 @@ namespace pumpd::coupling
         throw;
       }
     H5Fclose(file);
-    fail_if(crack.size() < 4 || crack.size() % 2 != 0 || boxes.size() % 4 != 0 || refined.size() % 3 != 0 || cycle.size() != 3,
+    fail_if(crack.size() < 4 || crack.size() % 2 != 0 || boxes.size() % 4 != 0 || refined.size() % 3 != 0 || cycle.size() != 4,
             path + " is not a global-local cycle checkpoint");
     for (std::size_t i = 0; i < crack.size(); i += 2)
       s.crack.push_back({crack[i], crack[i + 1]});
@@ -80,6 +81,7 @@ namespace pumpd::coupling
     s.exchanges   = std::size_t(cycle[0]);
     s.load_factor = cycle[1];
     s.finished    = cycle[2] != 0.;
+    s.halvings    = (unsigned int)(cycle[3]);
     return s;
   }
 } // namespace pumpd::coupling

@@ -1,7 +1,8 @@
 // The state of the global-local cycle between two exchanges, in HDF5 (checkpoint.h5), so that an
 // interrupted run resumes where it stopped. The PD box is rebuilt at every exchange from the crack
 // polyline, so the crack, the boxes, the accepted load, the counters and the refinements of the
-// global mesh (tip positions and levels, replayed on resume: the same mesh) are the whole state.
+// global mesh (tip positions and levels: the same mesh on resume) and the last box's horizon are
+// the whole state.
 #pragma once
 
 #include <cstddef>
@@ -21,6 +22,7 @@ namespace pumpd::coupling
     geometry::Polyline         crack;
     std::vector<geometry::Box> boxes;
     std::vector<Refinement>    refinements; ///< of every global solve so far
+    unsigned int               halvings = 0; ///< of the last box's horizon (coupling/resolution.h)
   };
 
   /// Throws std::runtime_error if the file cannot be written.

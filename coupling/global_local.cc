@@ -265,10 +265,7 @@ namespace pumpd::coupling
           state = read_cycle_checkpoint(checkpoint);
           crack.emplace(state.crack, scene.body, 1e-8 * std::max(scene.body.bounding_box().width(), scene.body.bounding_box().height()));
           global.restore(state.refinements);
-          // The last exchange's halvings: its refinement's levels beyond the section's.
-          const int last_halvings =
-            state.refinements.empty() ? 0 : int(state.refinements.back().levels) - int(s.global.refinement_levels);
-          boxes.restore(state.boxes, std::ldexp(1., -std::max(0, last_halvings)));
+          boxes.restore(state.boxes, std::ldexp(1., -int(state.halvings)));
           controller.restore(state.load_factor);
           out << "resuming after exchange " << state.exchanges << ": crack " << crack->length() << " m\n";
         }
@@ -353,7 +350,7 @@ namespace pumpd::coupling
     std::string Cycle::solve_global(ExchangeRecord &record, TipState &tip)
     {
       const auto t                = Clock::now();
-      tip                         = global.solve(*crack, halvings).front();
+      tip                         = global.solve(*crack).front();
       record.tip                  = tip.position;
       record.critical_load_factor = tip.critical_load_factor;
       record.dofs                 = global.n_dofs();
@@ -499,6 +496,7 @@ namespace pumpd::coupling
           state.crack       = crack->vertices();
           state.boxes       = boxes.history();
           state.refinements = global.refinements();
+          state.halvings    = halvings;
           write_cycle_checkpoint(checkpoint, state);
         }
 

@@ -100,12 +100,12 @@ namespace pumpd::coupling
       }
   }
 
-  std::vector<TipState> GlobalProblem::solve(const global::Crack &crack, unsigned int extra_levels)
+  std::vector<TipState> GlobalProblem::solve(const global::Crack &crack)
   {
     std::vector<geometry::Point> tips;
     for (const auto &t : crack.tips())
       {
-        history.push_back({t.position, settings.refinement_levels + extra_levels});
+        history.push_back({t.position, settings.refinement_levels});
         tips.push_back(t.position);
       }
     mesh_for(tips);

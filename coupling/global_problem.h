@@ -63,11 +63,10 @@ namespace pumpd::coupling
     GlobalProblem(const Scene &scene, const GlobalSettings &settings);
     ~GlobalProblem();
 
-    /// Meshes the body for the crack's tips (the scene's mesh refined around each tip, the
-    /// section's levels plus `extra_levels`, and around the earlier tips within the refinement
-    /// trail of a tip), sets up the enrichment and solves at lambda_ref: the state of every tip
-    /// (in the crack's tip order).
-    std::vector<TipState> solve(const global::Crack &crack, unsigned int extra_levels = 0);
+    /// Meshes the body for the crack's tips (the scene's mesh refined around each tip and around
+    /// the earlier tips within the refinement trail of a tip), sets up the enrichment and solves
+    /// at lambda_ref: the state of every tip (in the crack's tip order).
+    std::vector<TipState> solve(const global::Crack &crack);
     /// The refinements solve() made, in order.
     const std::vector<Refinement> &refinements() const { return history; }
     /// Takes the refinements of an earlier run (resume): the next solve() meshes as that run's did.

@@ -21,12 +21,14 @@ TEST(CycleCheckpoint, RoundTripIsExact)
   s.crack       = {{0.1016, 0.}, {0.1016, 0.0254}, {0.10184914583, 0.02683101623}};
   s.boxes       = {{0.0855, 0.0155, 0.118, 0.048}, {0.0905, 0.0265, 0.123, 0.059}};
   s.refinements = {{{0.1016, 0.0254}, 2}, {{0.10184914583, 0.02683101623}, 3}};
+  s.halvings    = 1;
   const std::string file = (dir / "checkpoint.h5").string();
   write_cycle_checkpoint(file, s);
   const auto r = read_cycle_checkpoint(file);
   EXPECT_EQ(r.exchanges, s.exchanges);
   EXPECT_EQ(r.load_factor, s.load_factor);
   EXPECT_EQ(r.finished, s.finished);
+  EXPECT_EQ(r.halvings, s.halvings);
   ASSERT_EQ(r.crack.size(), s.crack.size());
   for (std::size_t k = 0; k < s.crack.size(); ++k)
     {
