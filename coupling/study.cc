@@ -1,0 +1,384 @@
+#include "study.h"
+
+#include <deal.II/base/exceptions.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <map>
+#include <ostream>
+#include <sstream>
+
+#include "child_process.h"
+#include "error.h"
+#include "ladder.h"
+#include "lattice.h"
+#include "material.h"
+#include "model.h"
+#include "parameter_table.h"
+#include "parameters.h"
+#include "study_record.h"
+
+namespace pumpd::coupling
+{
+  namespace
+  {
+    namespace fs = std::filesystem;
+    using Clock  = std::chrono::steady_clock;
+
+    constexpr double unknown = std::numeric_limits<double>::quiet_NaN();
+
+    /// Full PD: dynamic-relaxation iterations per node over a run, per lattice spacing of the
+    /// body's longer side (calibrated on the Case II full-PD runs at delta = 4 and 8 mm).
+    constexpr double full_pd_iterations_per_spacing = 430.;
+    /// Full PD at m = 4 without a coupled run to calibrate by: seconds per node-iteration.
+    constexpr double full_pd_seconds_per_node_step = 1e-7;
+
+    /// One run of the study, planned: its rung, the Study entry it comes from, its scene file.
+    struct PlannedRun
+    {
+      Rung        rung;
+      std::string entry;
+      Parameters  parameters;
+      std::string scene_text;
+      std::string key;
+      std::string skip;            ///< why it does not run ("": it runs)
+      double      full_pd_nodes = 0.;
+
+      const std::string &name() const { return rung.name; }
+      const std::string &method() const { return parameters.method; }
+      double pd_spacing() const { return method() == "lefm-growth" ? 0. : parameters.pd.spacing(); }
+    };
+
+    std::string message_of(const dealii::ExceptionBase &e)
+    {
+      std::ostringstream info;
+      e.print_info(info);
+      return one_line(info.str());
+    }
+
+    std::string seconds_text(double s)
+    {
+      if (!std::isfinite(s))
+        return "unknown";
+      std::ostringstream t;
+      t << std::fixed << std::setprecision(0);
+      if (s < 120.)
+        t << s << " s";
+      else if (s < 7200.)
+        t << s / 60. << " min";
+      else
+        t << std::setprecision(1) << s / 3600. << " h";
+      return t.str();
+    }
+
+    /// The rungs of the study: lefm, default, the ladder's, fullpd (unless Full PD = no).
+    std::vector<std::pair<Rung, std::string>> rungs_of(const StudySettings &s)
+    {
+      std::vector<std::pair<Rung, std::string>> rungs = {
+        {{"lefm", "Type = lefm-growth", {{"Type", '=', "lefm-growth"}}}, "Ladder"}, {{"default", "", {}}, "Ladder"}};
+      for (auto &r : parse_ladder(s.ladder, "Ladder"))
+        {
+          for (const auto &[earlier, entry] : rungs)
+            if (earlier.name == r.name)
+              throw InvalidParameter("Ladder", r.name + ": " + r.setting,
+                                     "the name " + r.name + " is taken (lefm, default and fullpd are the study's own)");
+          rungs.emplace_back(r, "Ladder");
+        }
+      if (s.full_pd != "no")
+        {
+          const std::string setting = "Type = full-pd" + (s.full_pd_settings.empty() ? "" : ", " + s.full_pd_settings);
+          rungs.push_back({{"fullpd", setting, parse_overrides(setting, "Full PD settings", setting)}, "Full PD settings"});
+        }
+      return rungs;
+    }
+
+    /// The run's parameters read back from its scene file, and the checks of its scene (built again
+    /// if the rung changes it) and its PD material: each failure one InvalidParameter naming the rung.
+    void check_run(PlannedRun &run, bool own_scene, const Scene &scene)
+    {
+      const std::string rung = run.name() + ": " + run.rung.setting;
+      try
+        {
+          run.parameters = parse_parameters(run.scene_text);
+          if (run.method() == "pd-edge-crack")
+            throw InvalidParameter("Type", run.method(), "a study compares methods that grow the scene's crack");
+          const Scene rebuilt   = own_scene ? build_scene(run.parameters.scene) : Scene();
+          const Scene &s        = own_scene ? rebuilt : scene;
+          if (run.method() != "lefm-growth")
+            run.parameters.pd.material(s.material);
+        }
+      catch (const dealii::ExceptionBase &e)
+        {
+          throw InvalidParameter(run.entry, rung, message_of(e));
+        }
+      catch (const std::exception &e)
+        {
+          throw InvalidParameter(run.entry, rung, e.what());
+        }
+    }
+
+    /// Full PD: the lattice's estimated memory against this machine's (InvalidParameter under
+    /// Full PD = yes, skipped under auto).
+    void check_memory(PlannedRun &run, const Scene &scene, const std::string &full_pd)
+    {
+      const auto                &pd = run.parameters.pd;
+      const local::Lattice       grid(scene.body.bounding_box(), pd.spacing(), pd.horizon_over_spacing);
+      const local::LiptonMaterial material(pd.material(scene.material), pd.horizon);
+      const double bytes = local::estimated_model_bytes(grid, local::make_half_stencil(pd.horizon_over_spacing, material));
+      const double available = 0.8 * local::available_memory();
+      run.full_pd_nodes      = scene.body.area() / (pd.spacing() * pd.spacing());
+      if (bytes <= available)
+        return;
+      std::ostringstream why;
+      why << "the full-PD run " << run.name() << " (" << run.full_pd_nodes << " nodes, spacing " << pd.spacing()
+          << " m) needs about " << bytes / 1073741824. << " GiB, more than the " << available / 1073741824.
+          << " GiB this machine can give it: set Full PD = auto to skip it, or a coarser Full PD settings";
+      if (full_pd == "yes")
+        throw InvalidParameter("Full PD", full_pd, why.str());
+      run.skip = "skipped (memory)";
+    }
+
+    std::vector<PlannedRun> plan_runs(const ParameterTable &scene_table, const Scene &scene, const StudySettings &s,
+                                      const std::string &directory, const std::string &version)
+    {
+      std::vector<PlannedRun> plan;
+      for (const auto &[rung, entry] : rungs_of(s))
+        {
+          ParameterTable table     = apply(scene_table, rung, "global-local", entry);
+          const bool     own_scene = table.section("Scene") != scene_table.section("Scene");
+          table.set("Scene/Output directory", directory + "/" + rung.name);
+          PlannedRun run{rung, entry, {}, table.text("Study"), "", "", 0.};
+          check_run(run, own_scene, scene);
+          if (run.method() == "full-pd" && s.full_pd == "no")
+            continue;
+          if (run.method() == "full-pd")
+            check_memory(run, scene, s.full_pd);
+          run.key = run_key(version, run.scene_text, run.parameters.scene.mesh_file);
+          plan.push_back(std::move(run));
+        }
+      // Full PD last, the coarse before the fine.
+      std::stable_sort(plan.begin(), plan.end(), [](const PlannedRun &a, const PlannedRun &b) {
+        const bool fa = a.method() == "full-pd", fb = b.method() == "full-pd";
+        return fa != fb ? fb : fa && a.pd_spacing() > b.pd_spacing();
+      });
+      return plan;
+    }
+
+    /// What the study knows of the finished runs: by key.
+    class Runs
+    {
+    public:
+      explicit Runs(const std::string &file)
+        : file(file)
+      {
+        for (const auto &r : read_records(file))
+          if (r.status != "killed")
+            by_key[r.key] = r;
+      }
+      const RunRecord *find(const std::string &key) const
+      {
+        const auto it = by_key.find(key);
+        return it == by_key.end() ? nullptr : &it->second;
+      }
+      void add(const RunRecord &r)
+      {
+        append_record(file, r);
+        by_key[r.key] = r;
+      }
+
+    private:
+      std::string                      file;
+      std::map<std::string, RunRecord> by_key;
+    };
+
+    /// The estimated wall time of a run, from the runs done (the default's for the cycle, the
+    /// LEFM run's for LEFM growth) and, for full PD, its node count; unknown before those ran.
+    double estimate(const PlannedRun &run, const std::vector<PlannedRun> &plan, const Runs &runs, const Scene &scene)
+    {
+      const auto record_of = [&](const std::string &name) -> const RunRecord * {
+        for (const auto &p : plan)
+          if (p.name() == name)
+            {
+              const RunRecord *r = runs.find(p.key);
+              return r && r->ok() ? r : nullptr;
+            }
+        return nullptr;
+      };
+      const auto plan_of = [&](const std::string &name) -> const PlannedRun & {
+        return *std::find_if(plan.begin(), plan.end(), [&](const PlannedRun &p) { return p.name() == name; });
+      };
+      const RunRecord *lefm = record_of("lefm"), *cycle = record_of("default");
+      if (run.method() == "lefm-growth")
+        return lefm ? lefm->wall_seconds : unknown;
+      if (run.method() == "full-pd")
+        {
+          const auto  &pd         = run.parameters.pd;
+          const auto   box        = scene.body.bounding_box();
+          const double node_steps = full_pd_iterations_per_spacing * run.full_pd_nodes *
+                                    std::max(box.width(), box.height()) / pd.spacing();
+          const double m          = pd.horizon_over_spacing;
+          if (!cycle || cycle->pd_node_steps <= 0.)
+            return node_steps * full_pd_seconds_per_node_step * (m * m / 16.);
+          const double m_cycle = plan_of("default").parameters.pd.horizon_over_spacing;
+          return node_steps * cycle->pd_seconds / cycle->pd_node_steps * (m * m) / (m_cycle * m_cycle);
+        }
+      if (!cycle)
+        return unknown;
+      // The PD work of the cycle: box nodes ((B / h)^2) times exchanges (1 / da_max).
+      const auto &d = plan_of("default").parameters, &r = run.parameters;
+      const double nodes     = std::pow(r.cycle.box.size / r.pd.spacing() / (d.cycle.box.size / d.pd.spacing()), 2);
+      const double exchanges = d.cycle.exchange.max_advance / r.cycle.exchange.max_advance;
+      return cycle->wall_seconds - cycle->pd_seconds + cycle->pd_seconds * nodes * exchanges;
+    }
+
+    /// Runs one planned run as a child process and records it.
+    RunRecord execute(const PlannedRun &run, const std::string &executable, const std::string &directory)
+    {
+      const std::string prm = directory + "/" + run.name() + ".prm", log = directory + "/" + run.name() + ".log";
+      fs::remove_all(directory + "/" + run.name());
+      std::ofstream(prm) << "# " << run.name() << ": " << (run.rung.setting.empty() ? "the scene's settings" : run.rung.setting)
+                         << " (written by pumpd --study)\n"
+                         << run.scene_text;
+      const ChildRun child   = run_child(executable, {prm}, log);
+      auto           metrics = read_metrics(log);
+      const auto     metric  = [&](const char *a, const char *b) { return metrics.count(a) ? metrics[a] : metrics[b]; };
+      RunRecord      r;
+      r.run           = run.name();
+      r.key           = run.key;
+      r.method        = run.method();
+      r.status        = child.exit_code == 0 ? "ok" : child.exit_code < 0 ? "killed" : "exit " + std::to_string(child.exit_code);
+      r.wall_seconds  = child.seconds;
+      r.peak_memory   = child.peak_memory;
+      r.pd_node_steps = metric("coupling.pd_node_steps", "fullpd.node_steps");
+      r.global_dofs   = metric("coupling.global_dofs", "lefm.global_dofs");
+      r.pd_seconds    = metric("coupling.seconds_pd", "fullpd.seconds_total");
+      return r;
+    }
+
+    std::string last_line(const std::string &file)
+    {
+      std::ifstream in(file);
+      std::string   line, last;
+      while (std::getline(in, line))
+        if (!line.empty())
+          last = line;
+      return last;
+    }
+
+    /// The plot (scripts/plot_trade.py, python3 with matplotlib); a note if it cannot be drawn.
+    void plot(const std::string &directory, std::ostream &out)
+    {
+      const std::string script = std::string(PUMPD_SCRIPTS_DIR) + "/plot_trade.py";
+      if (run_child("/usr/bin/python3", {script, directory}, directory + "/plot.log").exit_code != 0)
+        out << "study: no trade.png: " << last_line(directory + "/plot.log") << std::endl;
+    }
+
+    void print_metrics(const TradeTable &t, std::ostream &out)
+    {
+      const auto row = [&](const std::string &name) -> const TradeRow * {
+        for (const auto &r : t.rows)
+          if (r.record.run == name && r.record.ok() && r.path.size() >= 2)
+            return &r;
+        return nullptr;
+      };
+      const TradeRow *lefm = row("lefm"), *cycle = row("default"), *full = t.full_pd ? &t.rows[*t.full_pd] : nullptr;
+      if (cycle && full)
+        out << "pumpd-metric trade.coupled_over_fullpd_time " << cycle->record.wall_seconds / full->record.wall_seconds
+            << "\npumpd-metric trade.coupled_vs_fullpd_mean_dev_mm " << 1e3 * cycle->from_full_pd->mean << "\n";
+      if (cycle && lefm)
+        out << "pumpd-metric trade.coupled_over_lefm_time " << cycle->record.wall_seconds / lefm->record.wall_seconds
+            << "\npumpd-metric trade.lefm_vs_coupled_mean_dev_mm "
+            << 1e3 * trade_distance(lefm->path, cycle->path).mean << "\n";
+      if (t.recommended && t.finest)
+        out << "pumpd-metric study.recommended_mean_vs_finest_mm " << 1e3 * t.rows[*t.recommended].from_finest->mean
+            << "\n";
+      out << std::flush;
+    }
+  } // namespace
+
+  TradeTable run_study(const std::string &scene_file, const std::string &executable, std::ostream &out)
+  {
+    const auto       t0         = Clock::now();
+    const Parameters parameters = read_parameters(scene_file);
+    const auto      &s          = parameters.study;
+    const auto       scene_table = ParameterTable::of_file(scene_file);
+    const Scene      scene       = build_scene(parameters.scene);
+    const std::string directory =
+      s.output_directory.empty() ? parameters.scene.output_directory + "/study" : s.output_directory;
+    const std::string version = file_hash(executable);
+    auto              plan    = plan_runs(scene_table, scene, s, directory, version);
+
+    fs::create_directories(directory);
+    Runs runs(directory + "/runs.csv");
+    out << "study: " << scene_file << ", " << plan.size() << " runs into " << directory << " (program " << version
+        << ")" << std::endl;
+    const auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - t0).count(); };
+
+    std::vector<TradeRow> rows;
+    std::size_t           reused = 0;
+    for (std::size_t i = 0; i < plan.size(); ++i)
+      {
+        const PlannedRun &run = plan[i];
+        TradeRow          row;
+        row.setting    = run.rung.setting;
+        row.pd_spacing = run.pd_spacing();
+        std::ostringstream head;
+        head << "study: run " << i + 1 << "/" << plan.size() << " " << run.name() << " ("
+             << (run.rung.setting.empty() ? "the scene's settings" : run.rung.setting) << ")";
+        const double eta = estimate(run, plan, runs, scene);
+        if (const RunRecord *done = runs.find(run.key))
+          {
+            row.record = *done;
+            row.reused = true;
+            ++reused;
+            out << head.str() << ": reused (" << done->status << ", " << seconds_text(done->wall_seconds)
+                << " when it ran)" << std::endl;
+          }
+        else if (!run.skip.empty() || (s.time_limit > 0. && std::isfinite(eta) && elapsed() + eta > s.time_limit))
+          {
+            row.record = {run.name(), run.key, run.method(), run.skip.empty() ? "skipped (time limit)" : run.skip};
+            out << head.str() << ": " << row.record.status << ", estimated " << seconds_text(eta) << std::endl;
+          }
+        else
+          {
+            double study_eta = 0.;
+            for (std::size_t j = i; j < plan.size(); ++j)
+              if (!runs.find(plan[j].key) && plan[j].skip.empty())
+                study_eta += estimate(plan[j], plan, runs, scene);
+            if (run.method() == "full-pd")
+              out << "study: full PD " << run.name() << ": about " << std::setprecision(3) << run.full_pd_nodes
+                  << " nodes, estimated " << seconds_text(eta) << std::setprecision(6) << std::endl;
+            out << head.str() << ": started, ETA " << seconds_text(eta) << ", study ETA " << seconds_text(study_eta)
+                << std::endl;
+            row.record = execute(run, executable, directory);
+            runs.add(row.record);
+            out << "study: " << run.name() << ": " << row.record.status << ", " << seconds_text(row.record.wall_seconds)
+                << ", " << std::fixed << std::setprecision(0) << row.record.peak_memory << " MiB" << std::defaultfloat
+                << std::setprecision(6);
+            if (!row.record.ok())
+              out << ": " << last_line(directory + "/" + run.name() + ".log");
+            out << std::endl;
+          }
+        if (row.record.status.rfind("skipped", 0) != 0)
+          read_run_output(directory + "/" + run.name(), row);
+        rows.push_back(std::move(row));
+      }
+
+    const TradeTable table = judge(std::move(rows), s.tolerance);
+    write_csv(table, directory + "/trade.csv");
+    write_markdown(table, scene_file, directory + "/trade.md");
+    plot(directory, out);
+    out << "study: trade.csv, trade.md, trade.png in " << directory << "\n"
+        << "pumpd-metric study.runs " << plan.size() << "\n"
+        << "pumpd-metric study.reused " << reused << "\n"
+        << "pumpd-metric study.seconds " << elapsed() << "\n";
+    print_metrics(table, out);
+    out << "study: recommended: " << recommendation(table) << std::endl;
+    return table;
+  }
+} // namespace pumpd::coupling
