@@ -9,18 +9,16 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <map>
 #include <string>
 #include <vector>
 
+#include "csv_rows.h"
 #include "metric.h"
 
 namespace
 {
   const std::string scene     = "tests/coupling/study/sent-coarse.prm";
   const std::string directory = "out/study-sent/study";
-
-  using Row = std::map<std::string, std::string>;
 
   /// Runs the study; its wall time [s].
   double study()
@@ -30,43 +28,13 @@ namespace
     EXPECT_EQ(std::system(command.c_str()), 0) << command;
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   }
-
-  /// The rows of a CSV file by column name (fields in double quotes may hold commas).
-  std::vector<Row> read_csv(const std::string &file)
-  {
-    std::ifstream            in(file);
-    std::vector<std::string> header;
-    std::vector<Row>         rows;
-    for (std::string line; std::getline(in, line);)
-      {
-        std::vector<std::string> fields(1);
-        bool                     quoted = false;
-        for (char c : line)
-          if (c == '"')
-            quoted = !quoted;
-          else if (c == ',' && !quoted)
-            fields.emplace_back();
-          else
-            fields.back() += c;
-        if (header.empty())
-          header = fields;
-        else
-          {
-            Row row;
-            for (std::size_t i = 0; i < header.size() && i < fields.size(); ++i)
-              row[header[i]] = fields[i];
-            rows.push_back(row);
-          }
-      }
-    return rows;
-  }
 } // namespace
 
 TEST(Study, CoarseSentStudyRecommendsWithinTheToleranceAndReusesItsRuns)
 {
   std::filesystem::remove_all(directory);
   const double first = study();
-  auto         rows  = read_csv(directory + "/trade.csv");
+  auto         rows  = pumpd::test::read_csv_rows(directory + "/trade.csv");
   ASSERT_EQ(rows.size(), 4u);
   const std::vector<std::string> names = {"lefm", "default", "m3", "m5"};
   int                            recommended = 0;
@@ -88,7 +56,7 @@ TEST(Study, CoarseSentStudyRecommendsWithinTheToleranceAndReusesItsRuns)
   EXPECT_TRUE(std::filesystem::exists(directory + "/trade.png"));
 
   const double second = study();
-  for (auto &row : read_csv(directory + "/trade.csv"))
+  for (auto &row : pumpd::test::read_csv_rows(directory + "/trade.csv"))
     EXPECT_EQ(row["reused"], "yes") << row["run"];
   pumpd::test::metric("study.first_seconds", first);
   pumpd::test::metric("study.reuse_time_fraction", second / first);
@@ -106,6 +74,6 @@ TEST(Study, CoarseSentStudyRecommendsWithinTheToleranceAndReusesItsRuns)
     out << line << "\n";
   out.close();
   study();
-  for (auto &row : read_csv(directory + "/trade.csv"))
+  for (auto &row : pumpd::test::read_csv_rows(directory + "/trade.csv"))
     EXPECT_EQ(row["reused"], row["run"] == "lefm" ? "no" : "yes") << row["run"];
 }
