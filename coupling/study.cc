@@ -169,13 +169,14 @@ namespace pumpd::coupling
       return plan;
     }
 
-    /// What the study knows of the finished runs: by key.
+    /// What the study knows of the finished runs (runs.csv in its output directory): by key.
     class Runs
     {
     public:
-      explicit Runs(const std::string &file)
-        : file(file)
+      explicit Runs(const std::string &directory)
+        : file(directory + "/runs.csv")
       {
+        fs::create_directories(directory);
         for (const auto &r : read_records(file))
           if (r.status != "killed")
             by_key[r.key] = r;
@@ -301,82 +302,130 @@ namespace pumpd::coupling
     }
   } // namespace
 
-  TradeTable run_study(const std::string &scene_file, const std::string &executable, std::ostream &out)
+  namespace
   {
-    const auto       t0         = Clock::now();
-    const Parameters parameters = read_parameters(scene_file);
-    const auto      &s          = parameters.study;
-    const auto       scene_table = ParameterTable::of_file(scene_file);
-    const Scene      scene       = build_scene(parameters.scene);
-    const std::string directory =
-      s.output_directory.empty() ? parameters.scene.output_directory + "/study" : s.output_directory;
-    const std::string version = file_hash(executable);
-    auto              plan    = plan_runs(scene_table, scene, s, directory, version);
+    /// A study under way: the scene, the runs planned, those recorded; each planned run taken in
+    /// turn (reused, skipped or run), with its progress lines.
+    class Study
+    {
+    public:
+      /// Reads the scene file and plans the runs: every check before any run.
+      Study(const std::string &scene_file, const std::string &executable, std::ostream &out)
+        : parameters(read_parameters(scene_file))
+        , scene(build_scene(parameters.scene))
+        , directory(parameters.study.output_directory.empty() ? parameters.scene.output_directory + "/study"
+                                                              : parameters.study.output_directory)
+        , executable(executable)
+        , version(file_hash(executable))
+        , plan(plan_runs(ParameterTable::of_file(scene_file), scene, parameters.study, directory, version))
+        , runs(directory)
+        , out(out)
+      {
+        out << "study: " << scene_file << ", " << plan.size() << " runs into " << directory << " (program "
+            << version << ")" << std::endl;
+      }
 
-    fs::create_directories(directory);
-    Runs runs(directory + "/runs.csv");
-    out << "study: " << scene_file << ", " << plan.size() << " runs into " << directory << " (program " << version
-        << ")" << std::endl;
-    const auto elapsed = [&] { return std::chrono::duration<double>(Clock::now() - t0).count(); };
+      std::size_t size() const { return plan.size(); }
+      std::size_t reused() const { return n_reused; }
+      double      seconds() const { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+      const std::string &output_directory() const { return directory; }
+      double             tolerance() const { return parameters.study.tolerance; }
 
-    std::vector<TradeRow> rows;
-    std::size_t           reused = 0;
-    for (std::size_t i = 0; i < plan.size(); ++i)
+      /// The planned run i: reused if recorded, skipped if it may not run, else run now.
+      TradeRow take(std::size_t i)
       {
         const PlannedRun &run = plan[i];
         TradeRow          row;
         row.setting    = run.rung.setting;
         row.pd_spacing = run.pd_spacing();
-        std::ostringstream head;
-        head << "study: run " << i + 1 << "/" << plan.size() << " " << run.name() << " ("
-             << (run.rung.setting.empty() ? "the scene's settings" : run.rung.setting) << ")";
         const double eta = estimate(run, plan, runs, scene);
+        out << "study: run " << i + 1 << "/" << plan.size() << " " << run.name() << " ("
+            << (run.rung.setting.empty() ? "the scene's settings" : run.rung.setting) << ")";
         if (const RunRecord *done = runs.find(run.key))
           {
             row.record = *done;
             row.reused = true;
-            ++reused;
-            out << head.str() << ": reused (" << done->status << ", " << seconds_text(done->wall_seconds)
-                << " when it ran)" << std::endl;
+            ++n_reused;
+            out << ": reused (" << done->status << ", " << seconds_text(done->wall_seconds) << " when it ran)"
+                << std::endl;
           }
-        else if (!run.skip.empty() || (s.time_limit > 0. && std::isfinite(eta) && elapsed() + eta > s.time_limit))
+        else if (const std::string why = skip_reason(run, eta); !why.empty())
           {
-            row.record = {run.name(), run.key, run.method(), run.skip.empty() ? "skipped (time limit)" : run.skip};
-            out << head.str() << ": " << row.record.status << ", estimated " << seconds_text(eta) << std::endl;
+            row.record = {run.name(), run.key, run.method(), why};
+            out << ": " << why << ", estimated " << seconds_text(eta) << std::endl;
+            return row;
           }
         else
-          {
-            double study_eta = 0.;
-            for (std::size_t j = i; j < plan.size(); ++j)
-              if (!runs.find(plan[j].key) && plan[j].skip.empty())
-                study_eta += estimate(plan[j], plan, runs, scene);
-            if (run.method() == "full-pd")
-              out << "study: full PD " << run.name() << ": about " << std::setprecision(3) << run.full_pd_nodes
-                  << " nodes, estimated " << seconds_text(eta) << std::setprecision(6) << std::endl;
-            out << head.str() << ": started, ETA " << seconds_text(eta) << ", study ETA " << seconds_text(study_eta)
-                << std::endl;
-            row.record = execute(run, executable, directory);
-            runs.add(row.record);
-            out << "study: " << run.name() << ": " << row.record.status << ", " << seconds_text(row.record.wall_seconds)
-                << ", " << std::fixed << std::setprecision(0) << row.record.peak_memory << " MiB" << std::defaultfloat
-                << std::setprecision(6);
-            if (!row.record.ok())
-              out << ": " << last_line(directory + "/" + run.name() + ".log");
-            out << std::endl;
-          }
-        if (row.record.status.rfind("skipped", 0) != 0)
-          read_run_output(directory + "/" + run.name(), row);
-        rows.push_back(std::move(row));
+          row.record = execute_with_progress(i, eta);
+        read_run_output(directory + "/" + run.name(), row);
+        return row;
       }
 
-    const TradeTable table = judge(std::move(rows), s.tolerance);
+    private:
+      /// "" if the run may start: not skipped by the plan, and its estimated end within the time limit.
+      std::string skip_reason(const PlannedRun &run, double eta) const
+      {
+        const double limit = parameters.study.time_limit;
+        if (run.skip.empty() && limit > 0. && std::isfinite(eta) && seconds() + eta > limit)
+          return "skipped (time limit)";
+        return run.skip;
+      }
+
+      /// The estimated time of the runs from i on that are neither recorded nor skipped.
+      double eta_from(std::size_t i) const
+      {
+        double eta = 0.;
+        for (std::size_t j = i; j < plan.size(); ++j)
+          if (!runs.find(plan[j].key) && plan[j].skip.empty())
+            eta += estimate(plan[j], plan, runs, scene);
+        return eta;
+      }
+
+      RunRecord execute_with_progress(std::size_t i, double eta)
+      {
+        const PlannedRun &run = plan[i];
+        out << ": started, ETA " << seconds_text(eta) << ", study ETA " << seconds_text(eta_from(i));
+        if (run.method() == "full-pd")
+          out << " (full PD: about " << std::setprecision(3) << run.full_pd_nodes << " nodes)" << std::setprecision(6);
+        out << std::endl;
+        const RunRecord record = execute(run, executable, directory);
+        runs.add(record);
+        out << "study: " << run.name() << ": " << record.status << ", " << seconds_text(record.wall_seconds) << ", "
+            << std::fixed << std::setprecision(0) << record.peak_memory << " MiB" << std::defaultfloat
+            << std::setprecision(6);
+        if (!record.ok())
+          out << ": " << last_line(directory + "/" + run.name() + ".log");
+        out << std::endl;
+        return record;
+      }
+
+      const Clock::time_point       t0 = Clock::now();
+      const Parameters              parameters;
+      const Scene                   scene;
+      const std::string             directory, executable, version;
+      const std::vector<PlannedRun> plan;
+      Runs                          runs;
+      std::ostream                 &out;
+      std::size_t                   n_reused = 0;
+    };
+  } // namespace
+
+  TradeTable run_study(const std::string &scene_file, const std::string &executable, std::ostream &out)
+  {
+    Study                 study(scene_file, executable, out);
+    std::vector<TradeRow> rows;
+    for (std::size_t i = 0; i < study.size(); ++i)
+      rows.push_back(study.take(i));
+
+    const std::string directory = study.output_directory();
+    const TradeTable  table     = judge(std::move(rows), study.tolerance());
     write_csv(table, directory + "/trade.csv");
     write_markdown(table, scene_file, directory + "/trade.md");
     plot(directory, out);
     out << "study: trade.csv, trade.md, trade.png in " << directory << "\n"
-        << "pumpd-metric study.runs " << plan.size() << "\n"
-        << "pumpd-metric study.reused " << reused << "\n"
-        << "pumpd-metric study.seconds " << elapsed() << "\n";
+        << "pumpd-metric study.runs " << study.size() << "\n"
+        << "pumpd-metric study.reused " << study.reused() << "\n"
+        << "pumpd-metric study.seconds " << study.seconds() << "\n";
     print_metrics(table, out);
     out << "study: recommended: " << recommendation(table) << std::endl;
     return table;
