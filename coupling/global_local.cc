@@ -264,8 +264,7 @@ namespace pumpd::coupling
             throw InvalidParameter("Resume", "true", "needs an output directory holding checkpoint.h5");
           state = read_cycle_checkpoint(checkpoint);
           crack.emplace(state.crack, scene.body, 1e-8 * std::max(scene.body.bounding_box().width(), scene.body.bounding_box().height()));
-          for (const auto &r : state.refinements)
-            global.refine(r);
+          global.restore(state.refinements);
           // The last exchange's halvings: its refinement's levels beyond the section's.
           const int last_halvings =
             state.refinements.empty() ? 0 : int(state.refinements.back().levels) - int(s.global.refinement_levels);

@@ -22,13 +22,19 @@ namespace pumpd::coupling
                       "the cell at the tip. The interaction integral lies within it.",
                       Patterns::Double(1e-300));
     prm.add_parameter("Refinement levels near the tip", refinement_levels,
-                      "Cells near a tip are refined this often (each level halves them); the refinement stays along "
-                      "the path.",
+                      "Cells near a tip are refined this often (each level halves them); the refinement follows the "
+                      "tip (Refinement trail).",
                       Patterns::Integer(0, 6));
     prm.add_parameter("Refinement radius", refinement_radius, "Refine the cells within this distance of a tip [m].",
                       Patterns::Double(1e-300));
+    prm.add_parameter("Refinement trail", refinement_trail,
+                      "The cells refined at earlier positions of a tip stay refined within this distance of a "
+                      "current tip [m]; farther behind, the crack runs through the mesh's own cells (the Heaviside "
+                      "enrichment carries its opening there). A length beyond the body keeps the whole path refined.",
+                      Patterns::Double(0.));
     prm.add_parameter("Linear solver", linear_solver,
-                      "direct: UMFPACK; cg-amg: conjugate gradients with AMG (Trilinos ML, rigid-body modes) on the "
+                      "direct: sparse Cholesky (CHOLMOD; UMFPACK's LU if the matrix is not numerically positive "
+                      "definite); cg-amg: conjugate gradients with AMG (Trilinos ML, rigid-body modes) on the "
                       "standard unknowns and a direct solve on the enriched ones, for large meshes.",
                       Patterns::Selection("direct|cg-amg"));
     prm.add_parameter("Reference load factor", reference_load_factor,
@@ -44,6 +50,13 @@ namespace pumpd::coupling
     , tria(std::make_unique<dealii::Triangulation<2>>())
   {
     tria->copy_triangulation(*scene.mesh);
+    make_problem();
+  }
+
+  GlobalProblem::~GlobalProblem() = default;
+
+  void GlobalProblem::make_problem()
+  {
     global::EnrichmentSettings enrichment;
     enrichment.tip_radius = settings.tip_radius;
     problem               = std::make_unique<global::EnrichedElasticity>(
@@ -53,7 +66,20 @@ namespace pumpd::coupling
     global::apply(scene.conditions, *problem, settings.reference_load_factor);
   }
 
-  GlobalProblem::~GlobalProblem() = default;
+  void GlobalProblem::mesh_for(const std::vector<geometry::Point> &tips)
+  {
+    problem.reset();
+    tria->clear();
+    tria->copy_triangulation(*scene.mesh);
+    for (const auto &r : history)
+      for (const auto &tip : tips)
+        if (geometry::norm(r.at - tip) <= settings.refinement_trail)
+          {
+            refine(r);
+            break;
+          }
+    make_problem();
+  }
 
   void GlobalProblem::refine(const Refinement &r)
   {
@@ -76,11 +102,13 @@ namespace pumpd::coupling
 
   std::vector<TipState> GlobalProblem::solve(const global::Crack &crack, unsigned int extra_levels)
   {
+    std::vector<geometry::Point> tips;
     for (const auto &t : crack.tips())
       {
         history.push_back({t.position, settings.refinement_levels + extra_levels});
-        refine(history.back());
+        tips.push_back(t.position);
       }
+    mesh_for(tips);
     problem->set_crack(crack);
     problem->setup();
     problem->assemble();

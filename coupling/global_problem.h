@@ -33,6 +33,7 @@ namespace pumpd::coupling
     double       tip_radius        = 0.006; ///< branch-function radius [m]
     unsigned int refinement_levels = 2;     ///< cells near a tip refined this often
     double       refinement_radius = 0.008; ///< [m] around each tip
+    double       refinement_trail  = 0.032; ///< [m] earlier tips' refinement kept within it
     std::string  linear_solver     = "direct";
     double       reference_load_factor = 1.; ///< lambda of the solve
 
@@ -62,14 +63,15 @@ namespace pumpd::coupling
     GlobalProblem(const Scene &scene, const GlobalSettings &settings);
     ~GlobalProblem();
 
-    /// Refines the mesh around the crack's tips (it stays refined along the path), the section's
-    /// levels plus `extra_levels`, sets up the enrichment and solves at lambda_ref: the state of
-    /// every tip (in the crack's tip order).
+    /// Meshes the body for the crack's tips (the scene's mesh refined around each tip, the
+    /// section's levels plus `extra_levels`, and around the earlier tips within the refinement
+    /// trail of a tip), sets up the enrichment and solves at lambda_ref: the state of every tip
+    /// (in the crack's tip order).
     std::vector<TipState> solve(const global::Crack &crack, unsigned int extra_levels = 0);
-    /// Refines as solve() did (a resumed run replays its history).
-    void refine(const Refinement &r);
     /// The refinements solve() made, in order.
     const std::vector<Refinement> &refinements() const { return history; }
+    /// Takes the refinements of an earlier run (resume): the next solve() meshes as that run's did.
+    void restore(const std::vector<Refinement> &refinements) { history = refinements; }
 
     /// Displacement per unit load factor at the points, each on its own side of the crack (one
     /// batched point evaluation). Call after solve() and before scale_to().
@@ -87,6 +89,13 @@ namespace pumpd::coupling
     const global::EnrichedElasticity &elasticity() const { return *problem; }
 
   private:
+    /// The scene's mesh refined at the refinements within the trail of a tip, in their order (a
+    /// function of the history and the tips, so a resumed run meshes as the uninterrupted one).
+    void mesh_for(const std::vector<geometry::Point> &tips);
+    void refine(const Refinement &r);
+    /// The enriched problem on the current mesh under the scene's conditions.
+    void make_problem();
+
     const Scene                                  &scene;
     GlobalSettings                                settings;
     std::unique_ptr<dealii::Triangulation<2, 2>>  tria;

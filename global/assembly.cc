@@ -19,6 +19,7 @@
 #include <optional>
 #include <set>
 
+#include "cholesky.h"
 #include "elasticity_impl.h"
 #include "error.h"
 
@@ -353,11 +354,15 @@ namespace pumpd::global
           for (auto it = scaled.begin(i); it != scaled.end(i); ++it)
             it->value() *= scale(i) * scale(it->column());
         scaled_rhs.scale(scale);
-        SparseDirectUMFPACK direct;
-        direct.initialize(scaled);
-        direct.vmult(solution, scaled_rhs);
+        report.solver = "Cholesky (CHOLMOD)";
+        if (!solve_cholesky(scaled, scaled_rhs, solution))
+          {
+            SparseDirectUMFPACK direct;
+            direct.initialize(scaled);
+            direct.vmult(solution, scaled_rhs);
+            report.solver = "UMFPACK (not positive definite for Cholesky)";
+          }
         solution.scale(scale);
-        report.solver = "UMFPACK";
       }
     else
       {

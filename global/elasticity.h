@@ -61,7 +61,8 @@ namespace pumpd::global
     unsigned int far_tip_order = 4;
   };
 
-  /// Linear solver: sparse direct (UMFPACK, the default) or conjugate gradients preconditioned by
+  /// Linear solver: sparse direct (the default: Cholesky by CHOLMOD, cholesky.h; UMFPACK's LU
+  /// where the matrix is not numerically positive definite) or conjugate gradients preconditioned by
   /// algebraic multigrid (Trilinos ML) with the rigid-body modes as near-null space, for large
   /// meshes. CG + AMG needs MPI to be initialised (Utilities::MPI::MPI_InitFinalize in main()).
   struct SolverSettings

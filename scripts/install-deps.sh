@@ -2,7 +2,8 @@
 # Installs the Debian packages pumpd needs, only those missing (make run / make test call it).
 set -euo pipefail
 packages=(g++ cmake make pkg-config libdeal.ii-dev libeigen3-dev libhdf5-dev libhdf5-openmpi-dev
-          libgtest-dev numdiff gmsh python3-matplotlib libopenblas0)
+          libgtest-dev numdiff gmsh python3-matplotlib libopenblas0
+          libsuitesparse-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")

@@ -3,7 +3,7 @@
 // edge crack (mode I Williams field as boundary data) and without it (set_crack(std::nullopt), a
 // linear field of constant stress as boundary data, the same Dirichlet edges and traction edge).
 // setup, assemble and solve are timed separately, median of a few repetitions, on one thread
-// (deal.II's thread limit; the BLAS under UMFPACK is whatever the system provides).
+// (deal.II's thread limit; the BLAS under CHOLMOD is whatever the system provides).
 // Timings are never pass/fail; the only checks are that both problems are solved correctly
 // (the plain one reproduces the linear field, the cracked one gets K_I).
 #include <gtest/gtest.h>

@@ -11,22 +11,16 @@
 //    did, each box at half its horizon), the box and exchange lengths halved (study::with_pd), one
 //    more global refinement level at the tip. coupling.caseN.path_change_half_horizon_mm: the
 //    symmetric mean distance of the grown parts (study::path_change), target <= 1 mm.
-// 3. Cost ratios, each of two runs in this process: trade.coupled_over_lefm_time (Case II by the
-//    cycle over Case II by LEFM growth, prm/ingraffea-case2-lefm.prm) and
-//    coupling.case3.default_over_fixed4mm_time (Case III at the default over Case III with the
-//    fixed 4 mm horizon of the section, Rule = fixed).
+// What the default costs against the fixed horizon and LEFM growth: bench_cycle_cost.
 #include <gtest/gtest.h>
 
 #include <deal.II/base/multithread_info.h>
 
-#include <chrono>
 #include <iostream>
 #include <map>
-#include <sstream>
 #include <string>
 
 #include "cycle_study.h"
-#include "lefm_growth.h"
 
 using namespace pumpd;
 using namespace pumpd::study;
@@ -98,25 +92,4 @@ TEST(ResolutionStudy, CaseIII)
 {
   dealii::MultithreadInfo::set_thread_limit(1);
   case_metrics(3);
-}
-
-TEST(ResolutionStudy, CostAgainstTheFixedHorizonAndLefm)
-{
-  dealii::MultithreadInfo::set_thread_limit(1);
-  auto fixed                  = from_prm("ingraffea-case3.prm");
-  fixed.cycle.resolution.rule = "fixed";
-  const CycleRun case3_fixed  = run(output, "case3_fixed_4mm", fixed);
-  const CycleRun &case3       = default_run(3);
-  metric("coupling.case3.default_over_fixed4mm_time",
-         case3.r && case3_fixed.r ? case3.r->seconds / case3_fixed.r->seconds : not_a_number);
-
-  auto lefm                     = from_prm("ingraffea-case2-lefm.prm");
-  lefm.scene.output_directory   = std::string(PUMPD_BINARY_DIR) + "/" + output + "/case2_lefm";
-  std::ostringstream quiet;
-  const auto         r          = coupling::run_lefm_growth(coupling::build_scene(lefm.scene), lefm.lefm_growth_settings(), quiet);
-  const CycleRun    &case2      = default_run(2);
-  std::cout << "Case II by LEFM growth: " << r.seconds << " s, tip (" << r.path.back().x << ", " << r.path.back().y
-            << ")" << std::endl;
-  metric("coupling.case2.lefm_seconds_total", r.seconds);
-  metric("trade.coupled_over_lefm_time", case2.r ? case2.r->seconds / r.seconds : not_a_number);
 }
