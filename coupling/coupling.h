@@ -21,6 +21,7 @@
 //   path_metrics.h        distances between crack paths (mean, Hausdorff)
 //   study.h               pumpd --study: the speed/accuracy trade of a scene
 //     study_settings.h      the section Study
+//     study_plan.h          the runs of a study, checked before any starts
 //     ladder.h              the settings tried: rungs of overrides, the scene file of each
 //     parameter_table.h     every entry of a scene file with its value
 //     child_process.h       a run as a child process: wall time, peak memory
