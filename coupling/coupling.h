@@ -19,6 +19,14 @@
 //   arrival.h             where a growing crack ends: a hole or the outline
 //   recorder.h            the files of a run (CSV, VTU/PVD, body, paths)
 //   path_metrics.h        distances between crack paths (mean, Hausdorff)
+//   study.h               pumpd --study: the speed/accuracy trade of a scene
+//     study_settings.h      the section Study
+//     study_plan.h          the runs of a study, checked before any starts
+//     ladder.h              the settings tried: rungs of overrides, the scene file of each
+//     parameter_table.h     every entry of a scene file with its value
+//     child_process.h       a run as a child process: wall time, peak memory
+//     study_record.h        runs.csv, the key that makes a run reusable
+//     trade_table.h         the table, the distances, the recommended setting
 #pragma once
 
 #include "arrival.h"
@@ -38,3 +46,4 @@
 #include "recorder.h"
 #include "resolution.h"
 #include "scene.h"
+#include "study.h"

@@ -1,5 +1,7 @@
 // pumpd: runs a scene from a deal.II parameter file.
 //   pumpd <scene.prm>          run it
+//   pumpd --study <scene.prm>  its speed/accuracy trade: LEFM, the cycle at a ladder of settings,
+//                              full PD (the section Study; study.h)
 //   pumpd --print-parameters   every parameter with default, allowed range and documentation
 //   pumpd --help
 #include <deal.II/base/exceptions.h>
@@ -13,15 +15,20 @@
 
 #include <unistd.h>
 
+#include "child_process.h"
 #include "error.h"
 #include "parameters.h"
+#include "study.h"
 
 namespace
 {
-  const char *usage = "usage: pumpd <scene.prm> | --print-parameters | --help\n"
+  const char *usage = "usage: pumpd <scene.prm> | --study <scene.prm> | --print-parameters | --help\n"
                       "  Runs the scene described by a deal.II ParameterHandler file (a specimen: its mesh, material,\n"
                       "  boundary conditions and cracks; and the method that computes it); see prm/ for examples\n"
-                      "  and --print-parameters for every parameter, its default and its allowed range.\n";
+                      "  and --print-parameters for every parameter, its default and its allowed range.\n"
+                      "  --study: runs the scene by LEFM growth, by the global-local cycle at its settings and at a\n"
+                      "  ladder of others, and by full PD (the section Study), and writes what each costs and where\n"
+                      "  its crack goes (trade.csv, trade.md, trade.png) and the cheapest setting within a tolerance.\n";
   /// The PD kernel's OpenMP threads meet at barriers several times per force evaluation. A thread
   /// that spins there holds its core while its sibling waits for one: on a machine shared with
   /// other work the PD states then take several times as long (docs/peridynamics.md). libgomp
@@ -41,8 +48,9 @@ int main(int argc, char **argv)
   wait_passively_at_barriers(argv);
   // MPI (one process) for the Trilinos solvers.
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const std::string arg = argc > 1 ? argv[1] : "--help";
-  if (arg == "--help" || arg == "-h" || argc > 2)
+  const std::string arg   = argc > 1 ? argv[1] : "--help";
+  const bool        study = arg == "--study" && argc == 3;
+  if (arg == "--help" || arg == "-h" || (argc > 2 && !study))
     {
       std::cout << usage;
       return argc > 2 ? 1 : 0;
@@ -55,20 +63,24 @@ int main(int argc, char **argv)
       prm.print_parameters(std::cout, dealii::ParameterHandler::Description);
       return 0;
     }
+  const std::string file = study ? argv[2] : arg;
   try
     {
-      pumpd::coupling::run(pumpd::coupling::read_parameters(arg), std::cout);
+      if (study)
+        pumpd::coupling::run_study(file, pumpd::coupling::this_executable(), std::cout);
+      else
+        pumpd::coupling::run(pumpd::coupling::read_parameters(file), std::cout);
       return 0;
     }
   catch (const dealii::ExceptionBase &e)
     {
       std::ostringstream info;
       e.print_info(info);
-      std::cerr << "pumpd: error in " << arg << ": " << pumpd::one_line(info.str()) << "\n";
+      std::cerr << "pumpd: error in " << file << ": " << pumpd::one_line(info.str()) << "\n";
     }
   catch (const std::exception &e)
     {
-      std::cerr << "pumpd: error in " << arg << ": " << pumpd::one_line(e.what()) << "\n";
+      std::cerr << "pumpd: error in " << file << ": " << pumpd::one_line(e.what()) << "\n";
     }
   return 1;
 }

@@ -27,6 +27,7 @@ namespace pumpd::coupling
     cycle.add_parameters(prm);
     full_pd.add_parameters(prm);
     edge_crack.add_parameters(prm);
+    study.add_parameters(prm);
   }
 
   Parameters read_parameters(const std::string &file)

@@ -7,6 +7,7 @@
 //   Peridynamics         the PD body (pd_settings.h)
 //   Crack growth         where growth stops (growth_settings.h)
 //   LEFM growth, Global-local, Full PD, Edge crack   each method's own
+//   Study                what pumpd --study runs (study_settings.h)
 #pragma once
 
 #include <iosfwd>
@@ -17,6 +18,7 @@
 #include "lefm_growth.h"
 #include "pd_edge_crack.h"
 #include "scene.h"
+#include "study_settings.h"
 
 namespace dealii
 {
@@ -36,6 +38,7 @@ namespace pumpd::coupling
     CycleSettings         cycle;
     FullPdControlSettings full_pd;
     EdgeCrackSettings     edge_crack;
+    StudySettings         study; ///< read by pumpd --study only (study.h)
 
     void add_parameters(dealii::ParameterHandler &prm);
 

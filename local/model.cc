@@ -69,28 +69,6 @@ namespace pumpd::local
       return {body.outline(), holes};
     }
 
-    /// Memory this machine can give a new allocation [bytes]: MemAvailable of /proc/meminfo, else
-    /// the free physical pages.
-    double available_memory()
-    {
-      std::ifstream in("/proc/meminfo");
-      std::string   key, unit;
-      double        kb = 0.;
-      while (in >> key >> kb >> unit)
-        if (key == "MemAvailable:")
-          return 1024. * kb;
-      return double(sysconf(_SC_AVPHYS_PAGES)) * double(sysconf(_SC_PAGESIZE));
-    }
-
-    /// What a model and a run on it hold [bytes]: per stored node 24 doubles (state, masks, the
-    /// integrators' and the cycle's copies), per bond of the half stencil 5 bits (existence,
-    /// initial cracks, no-fail zones, broken in two states).
-    double estimated_bytes(const Lattice &grid, const Stencil &st)
-    {
-      const double n = double(grid.storage_size());
-      return n * 24. * 8. + 5. * double(st.size()) * n / 8.;
-    }
-
     /// h = delta / m, with m checked first so that m <= 0 is reported as m, not as h.
     double spacing_for(double horizon, int m)
     {
@@ -100,6 +78,23 @@ namespace pumpd::local
       return horizon / m;
     }
   } // namespace
+
+  double available_memory()
+  {
+    std::ifstream in("/proc/meminfo");
+    std::string   key, unit;
+    double        kb = 0.;
+    while (in >> key >> kb >> unit)
+      if (key == "MemAvailable:")
+        return 1024. * kb;
+    return double(sysconf(_SC_AVPHYS_PAGES)) * double(sysconf(_SC_PAGESIZE));
+  }
+
+  double estimated_model_bytes(const Lattice &grid, const Stencil &st)
+  {
+    const double n = double(grid.storage_size());
+    return n * 24. * 8. + 5. * double(st.size()) * n / 8.;
+  }
 
   PrescribedRegion PrescribedRegion::disk(std::string name, geometry::Point centre, double radius, bool fix_x,
                                           bool fix_y)
@@ -188,7 +183,7 @@ namespace pumpd::local
     volume         = h * h;
     // Refuse a lattice this machine cannot hold before allocating it; memory grows like m^4 at a
     // fixed horizon (nodes and bonds per node each like m^2).
-    const double bytes = estimated_bytes(grid, st), available = 0.8 * available_memory();
+    const double bytes = estimated_model_bytes(grid, st), available = 0.8 * available_memory();
     if (bytes > available)
       {
         const int m_max = int(std::floor(horizon_ratio * std::pow(available / bytes, 0.25)));

@@ -1,0 +1,37 @@
+// The entries of a scene file with their values, every section's entry included (its default where
+// the file does not set it): what a study changes to make the scene file of each of its runs.
+// Paths name nested sections as in the file: "Global-local/Resolution/Rule".
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace pumpd::coupling
+{
+  class ParameterTable
+  {
+  public:
+    /// The parameters of a scene file after reading it (deal.II's exceptions for a malformed file,
+    /// an unknown entry or a value outside its pattern, as read_parameters).
+    static ParameterTable of_file(const std::string &file);
+
+    /// The value of the entry at `path` (std::out_of_range if there is none).
+    const std::string &get(const std::string &path) const;
+    void               set(const std::string &path, const std::string &value);
+    /// The paths whose last part is `name` and whose first is one of `sections`.
+    std::vector<std::string> find(const std::string &name, const std::vector<std::string> &sections) const;
+    bool                     has(const std::string &path) const;
+
+    /// A scene file setting every entry but those of the section `omitted`.
+    std::string text(const std::string &omitted) const;
+    /// The entries of the section `name` only, in the same form.
+    std::string section(const std::string &name) const;
+
+  private:
+    /// The entries whose path starts with `prefix` (all: "") but those starting with `omitted`.
+    std::string emit(const std::string &prefix, const std::string &omitted) const;
+
+    std::vector<std::pair<std::string, std::string>> entries; ///< path, value, in the order deal.II prints them
+  };
+} // namespace pumpd::coupling

@@ -1,0 +1,91 @@
+#include "study_record.h"
+
+#include <cstdint>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+#include "csv.h"
+
+namespace pumpd::coupling
+{
+  namespace
+  {
+    const char *header = "run,key,method,status,wall_s,peak_mib,pd_node_steps,global_dofs,pd_seconds";
+
+    std::uint64_t fnv1a(const std::string &bytes, std::uint64_t h = 14695981039346656037ull)
+    {
+      for (unsigned char c : bytes)
+        h = (h ^ c) * 1099511628211ull;
+      return h;
+    }
+
+    std::string hex(std::uint64_t h)
+    {
+      std::ostringstream s;
+      s << std::hex << std::setw(16) << std::setfill('0') << h;
+      return s.str();
+    }
+
+    std::string contents(const std::string &file)
+    {
+      std::ifstream      in(file, std::ios::binary);
+      std::ostringstream s;
+      s << in.rdbuf();
+      return s.str();
+    }
+  } // namespace
+
+  std::string file_hash(const std::string &file)
+  {
+    std::ifstream in(file, std::ios::binary);
+    return in ? hex(fnv1a(contents(file))) : "";
+  }
+
+  std::string run_key(const std::string &program_version, const std::string &scene_text, const std::string &mesh_file)
+  {
+    return hex(fnv1a(contents(mesh_file), fnv1a(scene_text, fnv1a(program_version))));
+  }
+
+  std::map<std::string, double> read_metrics(const std::string &log)
+  {
+    std::map<std::string, double> metrics;
+    std::ifstream                 in(log);
+    for (std::string line; std::getline(in, line);)
+      {
+        std::istringstream words(line);
+        std::string        tag, name;
+        double             value = 0.;
+        if (words >> tag >> name >> value && tag == "pumpd-metric")
+          metrics[name] = value;
+      }
+    return metrics;
+  }
+
+  std::vector<RunRecord> read_records(const std::string &file)
+  {
+    std::vector<RunRecord> records;
+    std::ifstream          in(file);
+    std::string            line;
+    std::getline(in, line); // the header
+    while (std::getline(in, line))
+      {
+        std::istringstream       row(line);
+        std::vector<std::string> f;
+        for (std::string field; std::getline(row, field, ',');)
+          f.push_back(field);
+        if (f.size() != 9)
+          continue; // a row cut short by an interruption
+        records.push_back({f[0], f[1], f[2], f[3], std::stod(f[4]), std::stod(f[5]), std::stod(f[6]), std::stod(f[7]),
+                           std::stod(f[8])});
+      }
+    return records;
+  }
+
+  void append_record(const std::string &file, const RunRecord &r)
+  {
+    CsvFile csv(file, header, true);
+    csv.row(r.run, r.key, r.method, r.status, r.wall_seconds, r.peak_memory, r.pd_node_steps, r.global_dofs,
+            r.pd_seconds);
+  }
+} // namespace pumpd::coupling

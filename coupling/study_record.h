@@ -1,0 +1,35 @@
+// The record of a study's finished runs (runs.csv in its output directory, a row appended as soon
+// as a run ends), and what makes a run the same as a recorded one: its key, a hash of the program
+// version, the run's scene file and the mesh file it names. The program version is a hash of the
+// pumpd executable's bytes: any rebuild that changes the program runs everything again.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace pumpd::coupling
+{
+  struct RunRecord
+  {
+    std::string run, key, method;
+    std::string status; ///< ok | exit <code> | killed
+    double      wall_seconds = 0., peak_memory = 0.; ///< [s], [MiB]
+    double      pd_node_steps = 0., global_dofs = 0., pd_seconds = 0.;
+
+    bool ok() const { return status == "ok"; }
+  };
+
+  /// FNV-1a (64 bit) of a file's bytes, in hex ("" if it cannot be read).
+  std::string file_hash(const std::string &file);
+  /// The key of a run: FNV-1a of the program version, its scene file text and its mesh file.
+  std::string run_key(const std::string &program_version, const std::string &scene_text, const std::string &mesh_file);
+
+  /// The `pumpd-metric <name> <value>` lines of a run's log.
+  std::map<std::string, double> read_metrics(const std::string &log);
+
+  /// The rows of runs.csv (none if it does not exist), in the order written.
+  std::vector<RunRecord> read_records(const std::string &file);
+  /// Appends a row (the header first if the file is new), flushed.
+  void append_record(const std::string &file, const RunRecord &record);
+} // namespace pumpd::coupling
