@@ -157,6 +157,28 @@ namespace pumpd::coupling
         out << "study: no trade.png: " << last_line(directory + "/plot.log") << std::endl;
     }
 
+    std::string text_of(const std::string &file)
+    {
+      std::ifstream      in(file);
+      std::ostringstream text;
+      text << in.rdbuf();
+      return text.str();
+    }
+
+    /// Whether trade.png shows this table already: the plot's table (plotted.csv, the table
+    /// without its `reused` flags) is the last one drawn, as when a study reuses every run.
+    bool plotted_already(TradeTable table, const std::string &directory)
+    {
+      for (auto &r : table.rows)
+        r.reused = false;
+      const std::string file = directory + "/plotted.csv", fresh = file + ".new";
+      write_csv(table, fresh);
+      const bool same = std::filesystem::exists(directory + "/trade.png") && std::filesystem::exists(file) &&
+                        text_of(file) == text_of(fresh);
+      std::filesystem::rename(fresh, file);
+      return same;
+    }
+
     void print_metrics(const TradeTable &t, std::ostream &out)
     {
       const auto row = [&](const std::string &name) -> const TradeRow * {
@@ -296,7 +318,8 @@ namespace pumpd::coupling
     const TradeTable  table     = judge(std::move(rows), study.tolerance());
     write_csv(table, directory + "/trade.csv");
     write_markdown(table, scene_file, directory + "/trade.md");
-    plot(directory, out);
+    if (!plotted_already(table, directory))
+      plot(directory, out);
     out << "study: trade.csv, trade.md, trade.png in " << directory << "\n"
         << "pumpd-metric study.runs " << study.size() << "\n"
         << "pumpd-metric study.reused " << study.reused() << "\n"
