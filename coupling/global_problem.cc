@@ -3,7 +3,9 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/grid/tria.h>
 
+#include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <limits>
 
 #include "elasticity.h"
@@ -51,6 +53,8 @@ namespace pumpd::coupling
   {
     tria->copy_triangulation(*scene.mesh);
     make_problem();
+    for (const auto &w : problem->warnings())
+      std::cerr << w << std::endl;
   }
 
   GlobalProblem::~GlobalProblem() = default;
@@ -68,16 +72,28 @@ namespace pumpd::coupling
 
   void GlobalProblem::mesh_for(const std::vector<geometry::Point> &tips)
   {
-    problem.reset();
-    tria->clear();
-    tria->copy_triangulation(*scene.mesh);
+    std::vector<Refinement> wanted;
     for (const auto &r : history)
-      for (const auto &tip : tips)
-        if (geometry::norm(r.at - tip) <= settings.refinement_trail)
-          {
-            refine(r);
-            break;
-          }
+      if (std::any_of(tips.begin(), tips.end(),
+                      [&](const geometry::Point &tip) { return geometry::norm(r.at - tip) <= settings.refinement_trail; }))
+        wanted.push_back(r);
+    // The mesh is refined refinement by refinement: while no earlier refinement has left the
+    // trail, the current mesh is the start of the wanted one.
+    const auto same   = [](const Refinement &a, const Refinement &b) {
+      return a.at.x == b.at.x && a.at.y == b.at.y && a.levels == b.levels;
+    };
+    const bool extends = applied.size() <= wanted.size() &&
+                         std::equal(applied.begin(), applied.end(), wanted.begin(), same);
+    problem.reset();
+    if (!extends)
+      {
+        tria->clear();
+        tria->copy_triangulation(*scene.mesh);
+        applied.clear();
+      }
+    for (std::size_t k = applied.size(); k < wanted.size(); ++k)
+      refine(wanted[k]);
+    applied = std::move(wanted);
     make_problem();
   }
 

@@ -100,6 +100,7 @@ namespace pumpd::coupling
     std::unique_ptr<dealii::Triangulation<2, 2>>  tria;
     std::unique_ptr<global::EnrichedElasticity>   problem;
     std::vector<Refinement>                       history;
+    std::vector<Refinement>                       applied; ///< the refinements the mesh holds, in order
     double                                        lambda = 1.;
   };
 

@@ -69,6 +69,20 @@ namespace pumpd::local
       return {body.outline(), holes};
     }
 
+    /// The segments of the cracks whose bounding box comes within `reach` of the box: no bond of
+    /// the box's lattice can cross the others.
+    std::vector<std::array<geometry::Point, 2>> near_box(const std::vector<geometry::Polyline> &cracks,
+                                                         const geometry::Box &box, double reach)
+    {
+      std::vector<std::array<geometry::Point, 2>> near;
+      for (const auto &c : cracks)
+        for (std::size_t s = 0; s + 1 < c.size(); ++s)
+          if (std::max(c[s].x, c[s + 1].x) >= box.x_min - reach && std::min(c[s].x, c[s + 1].x) <= box.x_max + reach &&
+              std::max(c[s].y, c[s + 1].y) >= box.y_min - reach && std::min(c[s].y, c[s + 1].y) <= box.y_max + reach)
+            near.push_back({c[s], c[s + 1]});
+      return near;
+    }
+
     /// h = delta / m, with m checked first so that m <= 0 is reported as m, not as h.
     double spacing_for(double horizon, int m)
     {
@@ -277,6 +291,7 @@ namespace pumpd::local
     // Bonds: exist between material nodes unless the segment leaves the body (through a hole or
     // across a re-entrant part of the outline).
     const geometry::Body boundary = near_box(reg.body, box, 2. * horizon);
+    const auto           crack_segments = near_box(reg.cracks, box, 2. * horizon);
     for (std::size_t k = 0; k < st.size(); ++k)
       {
         const std::ptrdiff_t off = st.dx[k] + std::ptrdiff_t(grid.stride()) * st.dy[k];
@@ -290,9 +305,8 @@ namespace pumpd::local
               continue;
             const std::size_t w = k * plane_words + i / 64;
             exists[w] |= std::uint64_t(1) << (i % 64);
-            if (std::any_of(reg.cracks.begin(), reg.cracks.end(), [&](const geometry::Polyline &c) {
-                  return geometry::segment_crosses_polyline(a, b, c);
-                }))
+            if (std::any_of(crack_segments.begin(), crack_segments.end(),
+                            [&](const auto &s) { return geometry::segments_intersect(a, b, s[0], s[1]); }))
               precrack[w] |= std::uint64_t(1) << (i % 64);
           }
       }
