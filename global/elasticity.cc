@@ -19,7 +19,6 @@
 #include <chrono>
 #include <cmath>
 #include <fstream>
-#include <iostream>
 #include <map>
 #include <sstream>
 
@@ -68,7 +67,6 @@ namespace pumpd::global
           << "); displacements and stress intensity factors will be too small. Remedy: use nu <= 0.49, or plane "
              "stress, or a much finer mesh";
         warning_list.push_back(w.str());
-        std::cerr << warning_list.back() << std::endl;
       }
   }
 

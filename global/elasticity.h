@@ -101,7 +101,7 @@ namespace pumpd::global
   public:
     /// The triangulation must outlive this object. Throws InvalidParameter for a material out
     /// of range (E <= 0, nu not in [0, 0.5)). A nearly incompressible material in plane strain
-    /// (nu > 0.49) is accepted with a warning (warnings(), also printed to std::cerr): bilinear
+    /// (nu > 0.49) is accepted with a warning (warnings(), for the caller to print): bilinear
     /// elements lock volumetrically there and the displacements and K_I come out too small.
     EnrichedElasticity(dealii::Triangulation<2, 2> &triangulation, const ElasticMaterial &material,
                        const EnrichmentSettings &settings);
