@@ -6,10 +6,12 @@
 //   pumpd --help
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/multithread_info.h>
 #include <deal.II/base/parameter_handler.h>
 
 #include <cstdlib>
 #include <iostream>
+#include <optional>
 #include <sstream>
 #include <string>
 
@@ -46,8 +48,8 @@ namespace
 int main(int argc, char **argv)
 {
   wait_passively_at_barriers(argv);
-  // MPI (one process) for the Trilinos solvers.
-  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  // deal.II on one thread (its assembly sums in one order: the same results on any machine).
+  dealii::MultithreadInfo::set_thread_limit(1);
   const std::string arg   = argc > 1 ? argv[1] : "--help";
   const bool        study = arg == "--study" && argc == 3;
   if (arg == "--help" || arg == "-h" || (argc > 2 && !study))
@@ -69,7 +71,14 @@ int main(int argc, char **argv)
       if (study)
         pumpd::coupling::run_study(file, pumpd::coupling::this_executable(), std::cout);
       else
-        pumpd::coupling::run(pumpd::coupling::read_parameters(file), std::cout);
+        {
+          const auto p = pumpd::coupling::read_parameters(file);
+          // MPI (one process) for the Trilinos solver only: its start-up is slow.
+          std::optional<dealii::Utilities::MPI::MPI_InitFinalize> mpi;
+          if (p.global.linear_solver == "cg-amg")
+            mpi.emplace(argc, argv, 1);
+          pumpd::coupling::run(p, std::cout);
+        }
       return 0;
     }
   catch (const dealii::ExceptionBase &e)

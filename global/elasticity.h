@@ -64,7 +64,8 @@ namespace pumpd::global
   /// Linear solver: sparse direct (the default: Cholesky by CHOLMOD, cholesky.h; UMFPACK's LU
   /// where the matrix is not numerically positive definite) or conjugate gradients preconditioned by
   /// algebraic multigrid (Trilinos ML) with the rigid-body modes as near-null space, for large
-  /// meshes. CG + AMG needs MPI to be initialised (Utilities::MPI::MPI_InitFinalize in main()).
+  /// meshes. CG + AMG needs MPI to be initialised (Utilities::MPI::MPI_InitFinalize; pumpd starts
+  /// it when the scene asks for this solver).
   struct SolverSettings
   {
     enum class Type
