@@ -5,6 +5,7 @@
 //   lattice.h         the node lattice with ghost padding, the half stencil and its weights
 //   model.h           PdModel: nodes, bonds (holes, pre-cracks), boundary layer, force kernel,
 //                     energies, damage, stretch ratio Z, stable time step
+//   strength.h        the model's peak stress under homogeneous strain (tensile strength)
 //   boundary_layer.h  prescribed, ramped displacement of the boundary layer
 //   integrators.h     velocity Verlet (stability bound enforced), dynamic relaxation (with an
 //                     optional servo for indirect displacement control)
@@ -23,4 +24,5 @@
 #include "lattice.h"
 #include "material.h"
 #include "model.h"
+#include "strength.h"
 #include "vtu_output.h"

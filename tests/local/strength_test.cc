@@ -1,0 +1,150 @@
+// The strength of Lipton's model (local/strength.h) against the PD lattice under the same
+// homogeneous strain. Every node of a box takes u = eps x (monotone path, 1 % of the peak strain a
+// step, to 1.5 times it); the kernel gives the forces, and the traction across a horizontal line
+// is the force the nodes above it receive from those below. The lattice replaces the integral by
+// cell midpoints, exact for the quadratic (small strain) energy through the weights, O((h/delta)^2)
+// in the softening factor exp(-a rho s^2): h^2 / 24 times its second derivative along a radius is
+// (a s^2 / m)^2 / 24 relative, under 0.1 / m^2 at the peak (a* <= 1.4). The tolerance, 0.5 / m^2
+// (3.1 % at m = 4, 0.8 % at m = 8), leaves room for the angular part and the rim cells. With
+// break_factor 1 the peak sits where the first bonds break, a cut-off the lattice resolves to one
+// bond length: O(h/delta), tolerance 1 / (4 m).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "metric.h"
+#include "model.h"
+#include "strength.h"
+
+using namespace pumpd;
+using namespace pumpd::local;
+
+namespace
+{
+  constexpr double delta = 0.004;
+
+  struct LatticeStress
+  {
+    double peak;        ///< largest sigma_yy along the path (parabola through the top samples)
+    double curve_error; ///< largest |sigma_h - sigma| / sigma over the path
+  };
+
+  LatticeStress lattice_stress(const MaterialParameters &p, int m, StrainPath path)
+  {
+    const double h = delta / m;
+    // Two rectangles of n1 and n2 columns, m + 2 columns clear of the box's sides, above a line
+    // with m + 2 rows of material on either side.
+    const int n1 = m, n2 = 3 * m, margin = m + 2, nx = n2 + 2 * margin, ny = 2 * (m + 2);
+    Region    region;
+    region.body = geometry::Body(geometry::Box{-1., -1., 1., 1.});
+    region.box  = {0., 0., (nx + 0.5) * h, (ny + 0.5) * h};
+    const PdModel model(p, delta, m, region);
+    const auto   &grid = model.lattice();
+
+    // The force on a rectangle of n columns, rows ny / 2 and up, is -n h sigma_yy plus its ends,
+    // the same for both widths: sigma_yy = -(F(n2) - F(n1)) / ((n2 - n1) h).
+    const auto force_above = [&](const State &s, int n) {
+      double f = 0.;
+      for (std::size_t i : model.nodes())
+        {
+          const int c = int(grid.column(i)), r = int(grid.row(i));
+          if (c >= margin && c < margin + n && r >= ny / 2)
+            f += s.fy[i] * model.node_volume();
+        }
+      return f;
+    };
+
+    const double        e_peak = peak_stress(model.material(), path).strain;
+    const double        px     = path == StrainPath::equibiaxial ? 1. : 0.;
+    State               s      = model.initial_state();
+    std::vector<double> sigma;
+    double              curve_error = 0.;
+    for (int step = 1; step <= 150; ++step)
+      {
+        const double e = 0.01 * step * e_peak;
+        for (std::size_t i : model.nodes())
+          {
+            const auto x = grid.position(i);
+            s.ux[i]      = px * e * x.x;
+            s.uy[i]      = e * x.y;
+          }
+        model.compute_forces(s);
+        sigma.push_back(-(force_above(s, n2) - force_above(s, n1)) / ((n2 - n1) * h));
+        const double exact = homogeneous_stress(model.material(), path, e);
+        curve_error        = std::max(curve_error, std::abs(sigma.back() - exact) / exact);
+      }
+    const std::size_t k = std::max_element(sigma.begin(), sigma.end()) - sigma.begin();
+    if (k == 0 || k + 1 == sigma.size())
+      return {sigma[k], curve_error};
+    const double slope = 0.5 * (sigma[k + 1] - sigma[k - 1]), curvature = sigma[k + 1] - 2. * sigma[k] + sigma[k - 1];
+    return {sigma[k] - 0.5 * slope * slope / curvature, curve_error};
+  }
+
+  const char *name(StrainPath path) { return path == StrainPath::uniaxial ? "uniaxial" : "equibiaxial"; }
+} // namespace
+
+TEST(Strength, LatticePeakMatchesTheFormula)
+{
+  for (int m : {4, 8})
+    {
+      double worst = 0.;
+      for (StrainPath path : {StrainPath::uniaxial, StrainPath::equibiaxial})
+        for (Influence j : {Influence::constant, Influence::linear})
+          {
+            MaterialParameters p; // the decks' PMMA, break_factor 10
+            p.influence         = j;
+            const double formula = peak_stress(LiptonMaterial(p, delta), path).stress;
+            const auto   lattice = lattice_stress(p, m, path);
+            const double err     = std::abs(lattice.peak - formula) / formula;
+            std::cout << name(path) << " strain, " << to_string(j) << " J, m = " << m << ": formula " << formula
+                      << " Pa, lattice " << lattice.peak << " Pa, rel. error " << err << " (curve "
+                      << lattice.curve_error << ")\n";
+            EXPECT_LT(err, 0.5 / (m * m)) << name(path) << ", " << to_string(j) << ", m = " << m;
+            EXPECT_LT(lattice.curve_error, 0.5 / (m * m)) << name(path) << ", " << to_string(j) << ", m = " << m;
+            worst = std::max(worst, err);
+          }
+      test::metric("pd.strength_rel_err_m" + std::to_string(m), worst);
+    }
+}
+
+TEST(Strength, BreakStretchCutsThePeak)
+{
+  for (int m : {4, 8})
+    for (Influence j : {Influence::constant, Influence::linear})
+      {
+        MaterialParameters p;
+        p.influence    = j;
+        p.break_factor = 1.;
+        const double formula = tensile_strength(LiptonMaterial(p, delta));
+        const double err     = std::abs(lattice_stress(p, m, StrainPath::uniaxial).peak - formula) / formula;
+        std::cout << "break factor 1, " << to_string(j) << " J, m = " << m << ": rel. error " << err << "\n";
+        EXPECT_LT(err, 0.25 / m) << to_string(j) << ", m = " << m;
+      }
+}
+
+TEST(Strength, ClosedFormConstants)
+{
+  for (Influence j : {Influence::constant, Influence::linear})
+    {
+      MaterialParameters p;
+      p.influence = j;
+      const LiptonMaterial mat(p, delta), half(p, 0.5 * delta);
+      const double         scale = std::sqrt(mat.lame_lambda() * p.fracture_energy / delta);
+      // sigma_max = k sqrt(lambda G_c / delta), docs/peridynamics.md.
+      const bool constant = j == Influence::constant;
+      EXPECT_NEAR(tensile_strength(mat) / scale, constant ? 1.12299 : 1.26460, 1e-5);
+      EXPECT_NEAR(peak_stress(mat, StrainPath::equibiaxial).stress / scale, constant ? 1.25255 : 1.40883, 1e-5);
+      // Halving the horizon raises the strength by sqrt(2).
+      EXPECT_NEAR(tensile_strength(half) / tensile_strength(mat), std::sqrt(2.), 1e-9);
+      // Small strain: sigma_yy = (lambda + 2 mu) eps = 3 lambda eps (uniaxial), 4 lambda eps (equibiaxial).
+      const double e = 1e-8;
+      EXPECT_NEAR(homogeneous_stress(mat, StrainPath::uniaxial, e) / (3. * mat.lame_lambda() * e), 1., 1e-6);
+      EXPECT_NEAR(homogeneous_stress(mat, StrainPath::equibiaxial, e) / (4. * mat.lame_lambda() * e), 1., 1e-6);
+      // The peak comes before the first break for break_factor > sqrt(2 a*) (1.44 and 1.64 here).
+      p.break_factor = 1.7;
+      EXPECT_NEAR(tensile_strength(LiptonMaterial(p, delta)) / tensile_strength(mat), 1., 1e-12);
+      p.break_factor = 1.;
+      EXPECT_LT(tensile_strength(LiptonMaterial(p, delta)), 0.92 * tensile_strength(mat));
+    }
+}
