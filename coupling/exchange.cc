@@ -3,6 +3,7 @@
 #include <chrono>
 #include <iomanip>
 #include <limits>
+#include <optional>
 #include <ostream>
 
 #include "integrators.h"
@@ -49,6 +50,39 @@ namespace pumpd::coupling
     return field;
   }
 
+  namespace
+  {
+    /// A relaxed PD state and its load factor.
+    struct Equilibrium
+    {
+      local::State state;
+      double       lambda = 0.;
+    };
+
+    /// The start of the PD state at `lambda` from the equilibrium s at lambda_s: the secant through
+    /// the equilibrium before it (first-order continuation in the load factor) where there is
+    /// one, else s scaled (exact while the box is elastic).
+    void predict(const local::PdModel &model, const std::optional<Equilibrium> &before, double lambda_s,
+                 double lambda, local::State &s)
+    {
+      if (before && lambda_s > before->lambda)
+        {
+          const double r = (lambda - lambda_s) / (lambda_s - before->lambda);
+          for (std::size_t i : model.nodes())
+            {
+              s.ux[i] += r * (s.ux[i] - before->state.ux[i]);
+              s.uy[i] += r * (s.uy[i] - before->state.uy[i]);
+            }
+          return;
+        }
+      for (std::size_t i : model.nodes())
+        {
+          s.ux[i] *= lambda / lambda_s;
+          s.uy[i] *= lambda / lambda_s;
+        }
+    }
+  } // namespace
+
   ExchangeOutcome run_exchange(const local::PdModel &model, const BoundaryTransfer &transfer,
                                ExchangeController &controller, const TipState &tip, double allowed,
                                const std::function<bool(const geometry::Polyline &)> &arrives,
@@ -66,17 +100,13 @@ namespace pumpd::coupling
     s                      = model.initial_state();
     double          lambda = controller.start();
     transfer.start(lambda * lambda_c, s);
-    local::State saved        = s;
-    double       saved_lambda = lambda, state_lambda = lambda;
+    local::State               saved        = s; // the state a repeat starts from
+    double                     saved_lambda = lambda, state_lambda = lambda;
+    std::optional<Equilibrium> before; // the equilibrium before `saved`
     for (;;)
       {
         auto t = Clock::now();
-        // Start from the last equilibrium scaled to the new load (exact while the box is elastic).
-        for (std::size_t i : model.nodes())
-          {
-            s.ux[i] *= lambda / state_lambda;
-            s.uy[i] *= lambda / state_lambda;
-          }
+        predict(model, before, state_lambda, lambda, s);
         transfer.apply(lambda * lambda_c, layer);
         layer.apply(s, 1.);
         const auto relaxed = relax.solve(s);
@@ -106,6 +136,8 @@ namespace pumpd::coupling
             << std::setprecision(6);
         if (r.decision == ExchangeController::Decision::raise)
           {
+            if (r.states > 1)
+              before = Equilibrium{saved, saved_lambda};
             saved        = s;
             saved_lambda = lambda;
             lambda       = controller.load_factor();

@@ -1,7 +1,8 @@
 // The scheme of one global-local exchange (preCICE's CouplingScheme::advance): quasi-static PD
 // states of one box along the load factor, each judged by the ExchangeController (raise the load,
 // repeat a too-long advance with half the increment, accept), the crack increment read off each
-// state's damage (CrackExtractor).
+// state's damage (CrackExtractor). Each state starts from the secant through the last two
+// equilibria of the exchange (first-order continuation in the load factor).
 #pragma once
 
 #include <cstddef>
