@@ -8,6 +8,7 @@
 //   lefm.h      Williams near-tip fields (PD driving data, interaction integral, exact solutions)
 //   csv.h       the CSV writer (flushed row by row)
 //   pvd.h       the ParaView series index (.pvd)
+//   program.h   another program run as a child process: exit status, wall time, peak memory
 #pragma once
 
 #include "body.h"
@@ -16,4 +17,5 @@
 #include "error.h"
 #include "geometry.h"
 #include "lefm.h"
+#include "program.h"
 #include "pvd.h"

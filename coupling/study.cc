@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -11,9 +12,9 @@
 #include <ostream>
 #include <sstream>
 
-#include "child_process.h"
 #include "error.h"
 #include "parameters.h"
+#include "program.h"
 #include "study_plan.h"
 #include "study_record.h"
 
@@ -123,10 +124,12 @@ namespace pumpd::coupling
       std::ofstream(prm) << "# " << run.name() << ": " << (run.rung.setting.empty() ? "the scene's settings" : run.rung.setting)
                          << " (written by pumpd --study)\n"
                          << run.scene_text;
-      const ChildRun child   = run_child(executable, {prm}, log);
-      auto           metrics = read_metrics(log);
-      const auto     metric  = [&](const char *a, const char *b) { return metrics.count(a) ? metrics[a] : metrics[b]; };
-      RunRecord      r;
+      const ProgramRun child = run_program({executable, prm}, log);
+      if (child.start_error != 0)
+        throw std::runtime_error("cannot start " + executable + ": " + std::strerror(child.start_error));
+      auto       metrics = read_metrics(log);
+      const auto metric  = [&](const char *a, const char *b) { return metrics.count(a) ? metrics[a] : metrics[b]; };
+      RunRecord  r;
       r.run           = run.name();
       r.key           = run.key;
       r.method        = run.method();
@@ -139,21 +142,15 @@ namespace pumpd::coupling
       return r;
     }
 
-    std::string last_line(const std::string &file)
-    {
-      std::ifstream in(file);
-      std::string   line, last;
-      while (std::getline(in, line))
-        if (!line.empty())
-          last = line;
-      return last;
-    }
-
     /// The plot (scripts/plot_trade.py, python3 with matplotlib); a note if it cannot be drawn.
     void plot(const std::string &directory, std::ostream &out)
     {
       const std::string script = std::string(PUMPD_SCRIPTS_DIR) + "/plot_trade.py";
-      if (run_child("/usr/bin/python3", {script, directory}, directory + "/plot.log").exit_code != 0)
+      const ProgramRun run = run_program({"/usr/bin/python3", script, directory}, directory + "/plot.log");
+      if (run.start_error != 0)
+        out << "study: no trade.png: /usr/bin/python3 could not be started (" << std::strerror(run.start_error) << ")"
+            << std::endl;
+      else if (run.exit_code != 0)
         out << "study: no trade.png: " << last_line(directory + "/plot.log") << std::endl;
     }
 
