@@ -78,15 +78,6 @@ namespace pumpd::coupling
     }
   } // namespace
 
-  PathDistance trade_distance(const geometry::Polyline &a, const geometry::Polyline &b)
-  {
-    const bool   a_longer = geometry::length(a) > geometry::length(b);
-    const auto  &shorter  = a_longer ? b : a;
-    const auto   longer   = up_to_nearest(a_longer ? a : b, shorter.back());
-    const double step     = std::max(geometry::length(shorter), geometry::length(longer)) / 1000.;
-    return path_distance(longer, shorter, std::max(step, 1e-9));
-  }
-
   void read_run_output(const std::string &directory, TradeRow &row)
   {
     if (std::filesystem::exists(directory + "/crack_path.csv"))
