@@ -6,7 +6,7 @@
 //   error.h     InvalidParameter (names the parameter and its allowed range), NonFiniteState
 //   conditions.h  a scene's boundary conditions on named places of the mesh, per unit load factor
 //   lefm.h      Williams near-tip fields (PD driving data, interaction integral, exact solutions)
-//   csv.h       the CSV writer (flushed row by row)
+//   csv.h       the CSV writer (flushed row by row) and reader
 //   pvd.h       the ParaView series index (.pvd)
 //   program.h   another program run as a child process: exit status, wall time, peak memory
 #pragma once

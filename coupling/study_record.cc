@@ -65,20 +65,9 @@ namespace pumpd::coupling
   std::vector<RunRecord> read_records(const std::string &file)
   {
     std::vector<RunRecord> records;
-    std::ifstream          in(file);
-    std::string            line;
-    std::getline(in, line); // the header
-    while (std::getline(in, line))
-      {
-        std::istringstream       row(line);
-        std::vector<std::string> f;
-        for (std::string field; std::getline(row, field, ',');)
-          f.push_back(field);
-        if (f.size() != 9)
-          continue; // a row cut short by an interruption
-        records.push_back({f[0], f[1], f[2], f[3], std::stod(f[4]), std::stod(f[5]), std::stod(f[6]), std::stod(f[7]),
-                           std::stod(f[8])});
-      }
+    for (auto &r : read_csv_rows(file))
+      records.push_back({r["run"], r["key"], r["method"], r["status"], std::stod(r["wall_s"]), std::stod(r["peak_mib"]),
+                         std::stod(r["pd_node_steps"]), std::stod(r["global_dofs"]), std::stod(r["pd_seconds"])});
     return records;
   }
 

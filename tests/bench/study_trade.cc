@@ -13,7 +13,7 @@
 #include <filesystem>
 #include <string>
 
-#include "csv_rows.h"
+#include "csv.h"
 #include "metric.h"
 
 TEST(StudyTrade, CaseTwoDefaultWithinOneMillimetreOfFullPd)
@@ -25,7 +25,7 @@ TEST(StudyTrade, CaseTwoDefaultWithinOneMillimetreOfFullPd)
     std::filesystem::copy_file(directory + "/" + file, std::string("docs/") + file,
                                std::filesystem::copy_options::overwrite_existing);
 
-  for (auto &row : pumpd::test::read_csv_rows(directory + "/trade.csv"))
+  for (auto &row : pumpd::read_csv_rows(directory + "/trade.csv"))
     {
       EXPECT_EQ(row["status"], "ok") << row["run"];
       if (row["run"] == "fullpd-delta8")
