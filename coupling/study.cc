@@ -17,6 +17,7 @@
 #include "program.h"
 #include "study_plan.h"
 #include "study_record.h"
+#include "text.h"
 
 namespace pumpd::coupling
 {
@@ -154,14 +155,6 @@ namespace pumpd::coupling
         out << "study: no trade.png: " << last_line(directory + "/plot.log") << std::endl;
     }
 
-    std::string text_of(const std::string &file)
-    {
-      std::ifstream      in(file);
-      std::ostringstream text;
-      text << in.rdbuf();
-      return text.str();
-    }
-
     /// Whether trade.png shows this table already: the plot's table (plotted.csv, the table
     /// without its `reused` flags) is the last one drawn, as when a study reuses every run.
     bool plotted_already(TradeTable table, const std::string &directory)
@@ -171,7 +164,7 @@ namespace pumpd::coupling
       const std::string file = directory + "/plotted.csv", fresh = file + ".new";
       write_csv(table, fresh);
       const bool same = std::filesystem::exists(directory + "/trade.png") && std::filesystem::exists(file) &&
-                        text_of(file) == text_of(fresh);
+                        file_contents(file) == file_contents(fresh);
       std::filesystem::rename(fresh, file);
       return same;
     }

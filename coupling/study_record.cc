@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "csv.h"
+#include "text.h"
 
 namespace pumpd::coupling
 {
@@ -26,25 +27,17 @@ namespace pumpd::coupling
       s << std::hex << std::setw(16) << std::setfill('0') << h;
       return s.str();
     }
-
-    std::string contents(const std::string &file)
-    {
-      std::ifstream      in(file, std::ios::binary);
-      std::ostringstream s;
-      s << in.rdbuf();
-      return s.str();
-    }
   } // namespace
 
   std::string file_hash(const std::string &file)
   {
-    std::ifstream in(file, std::ios::binary);
-    return in ? hex(fnv1a(contents(file))) : "";
+    const auto bytes = file_contents(file);
+    return bytes ? hex(fnv1a(*bytes)) : "";
   }
 
   std::string run_key(const std::string &program_version, const std::string &scene_text, const std::string &mesh_file)
   {
-    return hex(fnv1a(contents(mesh_file), fnv1a(scene_text, fnv1a(program_version))));
+    return hex(fnv1a(file_contents(mesh_file).value_or(""), fnv1a(scene_text, fnv1a(program_version))));
   }
 
   std::map<std::string, double> read_metrics(const std::string &log)
