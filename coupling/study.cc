@@ -18,6 +18,7 @@
 #include "study_plan.h"
 #include "study_record.h"
 #include "text.h"
+#include "trade_table.h"
 
 namespace pumpd::coupling
 {
@@ -297,7 +298,7 @@ namespace pumpd::coupling
     };
   } // namespace
 
-  TradeTable run_study(const std::string &scene_file, const std::string &executable, std::ostream &out)
+  void run_study(const std::string &scene_file, const std::string &executable, std::ostream &out)
   {
     Study                 study(scene_file, executable, out);
     std::vector<TradeRow> rows;
@@ -316,6 +317,5 @@ namespace pumpd::coupling
         << "pumpd-metric study.seconds " << study.seconds() << "\n";
     print_metrics(table, out);
     out << "study: recommended: " << recommendation(table) << std::endl;
-    return table;
   }
 } // namespace pumpd::coupling

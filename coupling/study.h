@@ -20,12 +20,10 @@
 #include <iosfwd>
 #include <string>
 
-#include "trade_table.h"
-
 namespace pumpd::coupling
 {
   /// The study of `scene_file`, each run by `executable` (pumpd). Progress, the recommendation and
   /// pumpd-metric lines to `out`, line by line. Throws InvalidParameter or deal.II's exceptions
   /// for bad input, before any run.
-  TradeTable run_study(const std::string &scene_file, const std::string &executable, std::ostream &out);
+  void run_study(const std::string &scene_file, const std::string &executable, std::ostream &out);
 } // namespace pumpd::coupling

@@ -24,20 +24,12 @@ namespace
 {
   const std::string output = "bench_cycle_cost_output";
 
+  /// The run's own totals under the name of its case.
   void print_parts(const std::string &prefix, const CycleRun &c)
   {
-    if (!c.r)
-      return;
-    metric(prefix + ".seconds_total", c.r->seconds);
-    metric(prefix + ".pd_node_steps", c.r->pd_node_steps);
-    double global = 0., pd = 0.;
-    for (const auto &e : c.r->exchanges)
-      {
-        global += e.seconds_global;
-        pd += e.seconds_pd;
-      }
-    metric(prefix + ".seconds_global", global);
-    metric(prefix + ".seconds_pd", pd);
+    if (c.r)
+      for (const std::string name : {"seconds_total", "pd_node_steps", "seconds_global", "seconds_pd"})
+        metric(prefix + "." + name, c.metrics.at("coupling." + name));
   }
 } // namespace
 
