@@ -144,8 +144,9 @@ namespace pumpd::coupling
       return r;
     }
 
-    /// The plot (scripts/plot_trade.py, python3 with matplotlib); a note if it cannot be drawn.
-    void plot(const std::string &directory, std::ostream &out)
+    /// Draws trade.png (scripts/plot_trade.py, python3 with matplotlib); false, with a note, if it
+    /// cannot.
+    bool plot(const std::string &directory, std::ostream &out)
     {
       const std::string script = std::string(PUMPD_SCRIPTS_DIR) + "/plot_trade.py";
       const ProgramRun run = run_program({"/usr/bin/python3", script, directory}, directory + "/plot.log");
@@ -154,20 +155,27 @@ namespace pumpd::coupling
             << std::endl;
       else if (run.exit_code != 0)
         out << "study: no trade.png: " << last_line(directory + "/plot.log") << std::endl;
+      return run.exit_code == 0;
     }
 
-    /// Whether trade.png shows this table already: the plot's table (plotted.csv, the table
-    /// without its `reused` flags) is the last one drawn, as when a study reuses every run.
-    bool plotted_already(TradeTable table, const std::string &directory)
+    /// trade.png of the table, drawn unless it shows this table already: plotted.csv is the table
+    /// (without its `reused` flags) of the last plot drawn, as when a study reuses every run.
+    void plot_if_changed(TradeTable table, const std::string &directory, std::ostream &out)
     {
       for (auto &r : table.rows)
         r.reused = false;
-      const std::string file = directory + "/plotted.csv", fresh = file + ".new";
+      const std::string plotted = directory + "/plotted.csv", fresh = plotted + ".new";
       write_csv(table, fresh);
-      const bool same = std::filesystem::exists(directory + "/trade.png") && std::filesystem::exists(file) &&
-                        file_contents(file) == file_contents(fresh);
-      std::filesystem::rename(fresh, file);
-      return same;
+      if (fs::exists(directory + "/trade.png") && file_contents(plotted) == file_contents(fresh))
+        {
+          fs::remove(fresh);
+          return;
+        }
+      fs::remove(plotted);
+      if (plot(directory, out))
+        fs::rename(fresh, plotted);
+      else
+        fs::remove(fresh);
     }
 
     void print_metrics(const TradeTable &t, std::ostream &out)
@@ -309,8 +317,7 @@ namespace pumpd::coupling
     const TradeTable  table     = judge(std::move(rows), study.tolerance());
     write_csv(table, directory + "/trade.csv");
     write_markdown(table, scene_file, directory + "/trade.md");
-    if (!plotted_already(table, directory))
-      plot(directory, out);
+    plot_if_changed(table, directory, out);
     out << "study: trade.csv, trade.md, trade.png in " << directory << "\n"
         << "pumpd-metric study.runs " << study.size() << "\n"
         << "pumpd-metric study.reused " << study.reused() << "\n"
