@@ -30,9 +30,9 @@ namespace pumpd::coupling
     constexpr double unknown = std::numeric_limits<double>::quiet_NaN();
 
     /// Full PD: dynamic-relaxation iterations per node over a run, per lattice spacing of the
-    /// body's longer side (calibrated on the Case II full-PD runs at delta = 4 and 8 mm).
+    /// body's longer side.
     constexpr double full_pd_iterations_per_spacing = 430.;
-    /// Full PD at m = 4 without a coupled run to calibrate by: seconds per node-iteration.
+    /// Full PD at m = 4 before the default run gives its own: seconds per node-iteration.
     constexpr double full_pd_seconds_per_node_step = 1e-7;
 
     std::string seconds_text(double s)

@@ -1,4 +1,4 @@
-// The speed/accuracy trade of a scene, as one command: `pumpd --study <scene.prm>` (issue 14).
+// The speed/accuracy trade of a scene, as one command: `pumpd --study <scene.prm>`.
 // The scene file is the input as for a single run; its section `Study` (study_settings.h) says
 // what to try. The study runs, each as a child process of the same executable on a scene file it
 // writes into the study's output directory:

@@ -1,4 +1,4 @@
-// Issue 13: what the default resolution costs, as two ratios of runs made in this one process
+// What the default resolution costs, as two ratios of runs made in this one process
 // (label bench: timings only; outputs under <build>/tests/bench/bench_cycle_cost_output/<run>/).
 // - coupling.case3.default_over_fixed4mm_time: Case III at the default (prm/ingraffea-case3.prm,
 //   the resolution rule) over the same scene with the section's fixed 4 mm horizon (Rule = fixed).

@@ -1,4 +1,4 @@
-// Issue 13: the right crack path at the default settings, and what it costs. Label study (not in
+// The right crack path at the default settings, and what it costs. Label study (not in
 // CI): the runs take minutes each. Every run starts from prm/ingraffea-caseN.prm (the default
 // settings: the resolution rule of coupling/resolution.h); outputs under
 // <build>/tests/bench/study_resolution_output/<run>/.

@@ -1,4 +1,4 @@
-// Speed against accuracy on Ingraffea Case II (issues 5 and 14): `pumpd --study
+// Speed against accuracy on Ingraffea Case II: `pumpd --study
 // prm/ingraffea-case2.prm` (the scene's section Study: LEFM growth, the cycle at the default and
 // at twelve settings, full PD at horizons 8 and 4 mm, the reference), then its trade.csv,
 // trade.md and trade.png copied into docs/. Runs done by an earlier study of the same program are
