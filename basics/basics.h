@@ -6,8 +6,10 @@
 //   error.h     InvalidParameter (names the parameter and its allowed range), NonFiniteState
 //   conditions.h  a scene's boundary conditions on named places of the mesh, per unit load factor
 //   lefm.h      Williams near-tip fields (PD driving data, interaction integral, exact solutions)
-//   csv.h       the CSV writer (flushed row by row)
+//   csv.h       the CSV writer (flushed row by row) and reader
 //   pvd.h       the ParaView series index (.pvd)
+//   text.h      a file's bytes, trim
+//   program.h   another program run as a child process: exit status, wall time, peak memory
 #pragma once
 
 #include "body.h"
@@ -16,4 +18,6 @@
 #include "error.h"
 #include "geometry.h"
 #include "lefm.h"
+#include "program.h"
 #include "pvd.h"
+#include "text.h"

@@ -15,4 +15,43 @@ namespace pumpd
     if (!exists)
       out << header << "\n";
   }
+
+  void CsvFile::row(const std::vector<std::string> &cells)
+  {
+    if (!out.is_open())
+      return;
+    for (std::size_t c = 0; c < cells.size(); ++c)
+      out << (c ? "," : "") << cells[c];
+    out << "\n";
+    out.flush();
+  }
+
+  std::vector<CsvRow> read_csv_rows(const std::string &file)
+  {
+    std::ifstream            in(file);
+    std::vector<std::string> header;
+    std::vector<CsvRow>      rows;
+    for (std::string line; std::getline(in, line);)
+      {
+        std::vector<std::string> fields(1);
+        bool                     quoted = false;
+        for (char c : line)
+          if (c == '"')
+            quoted = !quoted;
+          else if (c == ',' && !quoted)
+            fields.emplace_back();
+          else
+            fields.back() += c;
+        if (header.empty())
+          header = fields;
+        else if (fields.size() == header.size())
+          {
+            CsvRow row;
+            for (std::size_t i = 0; i < header.size(); ++i)
+              row[header[i]] = fields[i];
+            rows.push_back(row);
+          }
+      }
+    return rows;
+  }
 } // namespace pumpd

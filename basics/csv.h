@@ -1,10 +1,13 @@
-// The one CSV writer of pumpd's results (crack paths, load steps, load-displacement): a header,
-// then one row per call, flushed at once so that a long run's progress is on disk line by line.
+// The one CSV writer of pumpd's results (crack paths, load steps, load-displacement, the study's
+// tables): a header, then one row per call, flushed at once so that a long run's progress is on
+// disk line by line; and the reader of such files.
 #pragma once
 
 #include <fstream>
 #include <iomanip>
+#include <map>
 #include <string>
+#include <vector>
 
 namespace pumpd
 {
@@ -27,10 +30,20 @@ namespace pumpd
       out << "\n";
       out.flush();
     }
+    /// One row of cells, as they are.
+    void row(const std::vector<std::string> &cells);
 
     explicit operator bool() const { return out.is_open(); }
 
   private:
     std::ofstream out;
   };
+
+  /// A row of a CSV file: its fields by the header's column names.
+  using CsvRow = std::map<std::string, std::string>;
+
+  /// The rows of a CSV file under its header line (none if it cannot be read). A field in double
+  /// quotes may hold commas; a row with another number of fields than the header (cut short by an
+  /// interruption) is dropped.
+  std::vector<CsvRow> read_csv_rows(const std::string &file);
 } // namespace pumpd

@@ -24,7 +24,6 @@
 //     study_plan.h          the runs of a study, checked before any starts
 //     ladder.h              the settings tried: rungs of overrides, the scene file of each
 //     parameter_table.h     every entry of a scene file with its value
-//     child_process.h       a run as a child process: wall time, peak memory
 //     study_record.h        runs.csv, the key that makes a run reusable
 //     trade_table.h         the table, the distances, the recommended setting
 #pragma once

@@ -180,6 +180,13 @@ namespace pumpd::coupling
     }
   } // namespace
 
+  local::ModelMemory full_pd_memory(const Scene &scene, const PeridynamicsSettings &pd)
+  {
+    const local::Lattice        grid(scene.body.bounding_box(), pd.spacing(), pd.horizon_over_spacing);
+    const local::LiptonMaterial material(pd.material(scene.material), pd.horizon);
+    return local::model_memory(grid, local::make_half_stencil(pd.horizon_over_spacing, material));
+  }
+
   FullPdResult run_full_pd(const Scene &scene, const FullPdSettings &settings, std::ostream &out)
   {
     const auto &p  = settings.full_pd;

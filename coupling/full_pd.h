@@ -52,6 +52,7 @@
 #include <vector>
 
 #include "growth_settings.h"
+#include "model.h"
 #include "pd_settings.h"
 #include "scene.h"
 
@@ -118,6 +119,10 @@ namespace pumpd::coupling
     /// symmetric mean and Hausdorff distance [m]; -1 without one.
     double reference_mean = -1., reference_hausdorff = -1.;
   };
+
+  /// The memory full PD needs on `scene` with `pd` (the lattice over the body's bounding box)
+  /// against this machine's, checked before run_full_pd would refuse it.
+  local::ModelMemory full_pd_memory(const Scene &scene, const PeridynamicsSettings &pd);
 
   /// Throws InvalidParameter naming the parameter for bad input.
   FullPdResult run_full_pd(const Scene &scene, const FullPdSettings &settings, std::ostream &progress);

@@ -5,23 +5,18 @@
 #include <sstream>
 
 #include "error.h"
+#include "text.h"
 
 namespace pumpd::coupling
 {
   namespace
   {
-    std::string trimmed(const std::string &s)
-    {
-      const auto first = s.find_first_not_of(" \t\n");
-      return first == std::string::npos ? "" : s.substr(first, s.find_last_not_of(" \t\n") - first + 1);
-    }
-
     std::vector<std::string> split(const std::string &s, char separator)
     {
       std::vector<std::string> parts;
       std::stringstream        in(s);
       for (std::string part; std::getline(in, part, separator);)
-        parts.push_back(trimmed(part));
+        parts.push_back(trim(part));
       return parts;
     }
 
@@ -31,14 +26,6 @@ namespace pumpd::coupling
       for (const auto &p : parts)
         s += (s.empty() ? "" : ", ") + p;
       return s;
-    }
-
-    std::string number_text(double v)
-    {
-      std::ostringstream s;
-      s.precision(10);
-      s << v;
-      return s.str();
     }
 
     /// The path of the override's entry among the sections `method` reads.
@@ -69,13 +56,13 @@ namespace pumpd::coupling
   {
     static const std::regex relative(R"((.*\S)\s+([x+-])\s*([-+]?[0-9.]+([eE][-+]?[0-9]+)?))");
     std::vector<Override>   result;
-    if (trimmed(overrides).empty())
+    if (trim(overrides).empty())
       return result;
     for (const auto &o : split(overrides, ','))
       {
         std::smatch m;
         if (const auto eq = o.find('='); eq != std::string::npos)
-          result.push_back({trimmed(o.substr(0, eq)), '=', trimmed(o.substr(eq + 1))});
+          result.push_back({trim(o.substr(0, eq)), '=', trim(o.substr(eq + 1))});
         else if (std::regex_match(o, m, relative))
           result.push_back({m[1], m[2].str()[0], m[3]});
         else
@@ -97,12 +84,12 @@ namespace pumpd::coupling
         if (r.empty())
           continue;
         const auto colon = r.find(':');
-        const auto name  = trimmed(r.substr(0, colon));
+        const auto name  = trim(r.substr(0, colon));
         if (colon == std::string::npos || !std::regex_match(name, plain_name))
           throw InvalidParameter(entry, r,
                                  "a rung is \"<name>: <override>, ...\", its name of letters, digits and . _ + - "
                                  "(the name of its files)");
-        const auto setting = trimmed(r.substr(colon + 1));
+        const auto setting = trim(r.substr(colon + 1));
         rungs.push_back({name, setting, parse_overrides(setting, entry, r)});
       }
     return rungs;
@@ -150,7 +137,7 @@ namespace pumpd::coupling
                                    path + " = " + p.get(path) + " is not a number: only \"= <value>\" changes it");
           }
         const double by = std::stod(o.value);
-        p.set(path, number_text(o.operation == 'x' ? base * by : o.operation == '+' ? base + by : base - by));
+        p.set(path, to_text(o.operation == 'x' ? base * by : o.operation == '+' ? base + by : base - by, 10));
       }
     return p;
   }

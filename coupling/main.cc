@@ -17,9 +17,9 @@
 
 #include <unistd.h>
 
-#include "child_process.h"
 #include "error.h"
 #include "parameters.h"
+#include "program.h"
 #include "study.h"
 
 namespace
@@ -69,7 +69,7 @@ int main(int argc, char **argv)
   try
     {
       if (study)
-        pumpd::coupling::run_study(file, pumpd::coupling::this_executable(), std::cout);
+        pumpd::coupling::run_study(file, pumpd::this_executable(), std::cout);
       else
         {
           const auto p = pumpd::coupling::read_parameters(file);

@@ -7,17 +7,12 @@
 #include <stdexcept>
 
 #include "parameters.h"
+#include "text.h"
 
 namespace pumpd::coupling
 {
   namespace
   {
-    std::string trimmed(const std::string &s)
-    {
-      const auto first = s.find_first_not_of(" \t");
-      return first == std::string::npos ? "" : s.substr(first, s.find_last_not_of(" \t") - first + 1);
-    }
-
     std::string section_of(const std::string &path) { return path.substr(0, path.rfind('/') + 1); }
   } // namespace
 
@@ -40,11 +35,11 @@ namespace pumpd::coupling
           {
             std::string next;
             std::getline(printed, next);
-            line = line.substr(0, line.size() - 1) + trimmed(next);
+            line = line.substr(0, line.size() - 1) + trim(next);
           }
-        line = trimmed(line);
+        line = trim(line);
         if (line.rfind("subsection ", 0) == 0)
-          sections.push_back(trimmed(line.substr(11)));
+          sections.push_back(trim(line.substr(11)));
         else if (line == "end")
           sections.pop_back();
         else if (line.rfind("set ", 0) == 0)
@@ -53,7 +48,7 @@ namespace pumpd::coupling
             std::string path;
             for (const auto &s : sections)
               path += s + "/";
-            table.entries.emplace_back(path + trimmed(line.substr(4, eq - 4)), trimmed(line.substr(eq + 1)));
+            table.entries.emplace_back(path + trim(line.substr(4, eq - 4)), trim(line.substr(eq + 1)));
           }
       }
     return table;

@@ -125,4 +125,13 @@ namespace pumpd::coupling
   {
     return path_distance(up_to_nearest(path, published.back()), published, step);
   }
+
+  PathDistance trade_distance(const geometry::Polyline &a, const geometry::Polyline &b)
+  {
+    const bool   a_longer = geometry::length(a) > geometry::length(b);
+    const auto  &shorter  = a_longer ? b : a, &longer = a_longer ? a : b;
+    const double cut      = geometry::length(up_to_nearest(longer, shorter.back()));
+    const double step     = std::max(geometry::length(shorter), cut) / 1000.;
+    return published_distance(longer, shorter, std::max(step, 1e-9));
+  }
 } // namespace pumpd::coupling

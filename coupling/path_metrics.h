@@ -30,4 +30,7 @@ namespace pumpd::coupling
   /// A computed path against a published one over the published extent: path_distance of our
   /// path up to its point nearest the published tip, and the published path.
   PathDistance published_distance(const geometry::Polyline &path, const geometry::Polyline &published, double step);
+  /// Two computed paths over the shorter one's extent: published_distance of the longer against
+  /// the shorter, sampled every thousandth of the longer of the two (the longer cut as there).
+  PathDistance trade_distance(const geometry::Polyline &a, const geometry::Polyline &b);
 } // namespace pumpd::coupling

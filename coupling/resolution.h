@@ -1,5 +1,5 @@
 // The resolution of each PD box, chosen by what lies ahead of the crack tip (DESIGN.md,
-// coupling/; issue 13). A PD box resolves the tip with its horizon delta: the tip's family (one
+// coupling/). A PD box resolves the tip with its horizon delta: the tip's family (one
 // horizon), and the surface layer of a hole or edge, where the families miss bonds and the
 // material is softer than the continuum it is coupled to (one horizon, Le & Bobaru 2018). The
 // crack's path near a free surface is modelled, not an artefact of the two overlapping, when a

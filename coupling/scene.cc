@@ -21,6 +21,7 @@
 #include "crack.h"
 #include "error.h"
 #include "mesh.h"
+#include "text.h"
 
 namespace pumpd::coupling
 {
@@ -116,12 +117,6 @@ namespace pumpd::coupling
   namespace
   {
     constexpr double pi = 3.14159265358979323846;
-
-    std::string trim(const std::string &s)
-    {
-      const auto a = s.find_first_not_of(" \t\n\r"), b = s.find_last_not_of(" \t\n\r");
-      return a == std::string::npos ? "" : s.substr(a, b - a + 1);
-    }
 
     /// Splits at `separator` outside parentheses.
     std::vector<std::string> split_outside_parentheses(const std::string &text, char separator)

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
@@ -11,11 +12,13 @@
 #include <ostream>
 #include <sstream>
 
-#include "child_process.h"
 #include "error.h"
 #include "parameters.h"
+#include "program.h"
 #include "study_plan.h"
 #include "study_record.h"
+#include "text.h"
+#include "trade_table.h"
 
 namespace pumpd::coupling
 {
@@ -27,9 +30,9 @@ namespace pumpd::coupling
     constexpr double unknown = std::numeric_limits<double>::quiet_NaN();
 
     /// Full PD: dynamic-relaxation iterations per node over a run, per lattice spacing of the
-    /// body's longer side (calibrated on the Case II full-PD runs at delta = 4 and 8 mm).
+    /// body's longer side.
     constexpr double full_pd_iterations_per_spacing = 430.;
-    /// Full PD at m = 4 without a coupled run to calibrate by: seconds per node-iteration.
+    /// Full PD at m = 4 before the default run gives its own: seconds per node-iteration.
     constexpr double full_pd_seconds_per_node_step = 1e-7;
 
     std::string seconds_text(double s)
@@ -123,10 +126,12 @@ namespace pumpd::coupling
       std::ofstream(prm) << "# " << run.name() << ": " << (run.rung.setting.empty() ? "the scene's settings" : run.rung.setting)
                          << " (written by pumpd --study)\n"
                          << run.scene_text;
-      const ChildRun child   = run_child(executable, {prm}, log);
-      auto           metrics = read_metrics(log);
-      const auto     metric  = [&](const char *a, const char *b) { return metrics.count(a) ? metrics[a] : metrics[b]; };
-      RunRecord      r;
+      const ProgramRun child = run_program({executable, prm}, log);
+      if (child.start_error != 0)
+        throw std::runtime_error("cannot start " + executable + ": " + std::strerror(child.start_error));
+      auto       metrics = read_metrics(log);
+      const auto metric  = [&](const char *a, const char *b) { return metrics.count(a) ? metrics[a] : metrics[b]; };
+      RunRecord  r;
       r.run           = run.name();
       r.key           = run.key;
       r.method        = run.method();
@@ -139,44 +144,38 @@ namespace pumpd::coupling
       return r;
     }
 
-    std::string last_line(const std::string &file)
-    {
-      std::ifstream in(file);
-      std::string   line, last;
-      while (std::getline(in, line))
-        if (!line.empty())
-          last = line;
-      return last;
-    }
-
-    /// The plot (scripts/plot_trade.py, python3 with matplotlib); a note if it cannot be drawn.
-    void plot(const std::string &directory, std::ostream &out)
+    /// Draws trade.png (scripts/plot_trade.py, python3 with matplotlib); false, with a note, if it
+    /// cannot.
+    bool plot(const std::string &directory, std::ostream &out)
     {
       const std::string script = std::string(PUMPD_SCRIPTS_DIR) + "/plot_trade.py";
-      if (run_child("/usr/bin/python3", {script, directory}, directory + "/plot.log").exit_code != 0)
+      const ProgramRun run = run_program({"/usr/bin/python3", script, directory}, directory + "/plot.log");
+      if (run.start_error != 0)
+        out << "study: no trade.png: /usr/bin/python3 could not be started (" << std::strerror(run.start_error) << ")"
+            << std::endl;
+      else if (run.exit_code != 0)
         out << "study: no trade.png: " << last_line(directory + "/plot.log") << std::endl;
+      return run.exit_code == 0;
     }
 
-    std::string text_of(const std::string &file)
-    {
-      std::ifstream      in(file);
-      std::ostringstream text;
-      text << in.rdbuf();
-      return text.str();
-    }
-
-    /// Whether trade.png shows this table already: the plot's table (plotted.csv, the table
-    /// without its `reused` flags) is the last one drawn, as when a study reuses every run.
-    bool plotted_already(TradeTable table, const std::string &directory)
+    /// trade.png of the table, drawn unless it shows this table already: plotted.csv is the table
+    /// (without its `reused` flags) of the last plot drawn, as when a study reuses every run.
+    void plot_if_changed(TradeTable table, const std::string &directory, std::ostream &out)
     {
       for (auto &r : table.rows)
         r.reused = false;
-      const std::string file = directory + "/plotted.csv", fresh = file + ".new";
+      const std::string plotted = directory + "/plotted.csv", fresh = plotted + ".new";
       write_csv(table, fresh);
-      const bool same = std::filesystem::exists(directory + "/trade.png") && std::filesystem::exists(file) &&
-                        text_of(file) == text_of(fresh);
-      std::filesystem::rename(fresh, file);
-      return same;
+      if (fs::exists(directory + "/trade.png") && file_contents(plotted) == file_contents(fresh))
+        {
+          fs::remove(fresh);
+          return;
+        }
+      fs::remove(plotted);
+      if (plot(directory, out))
+        fs::rename(fresh, plotted);
+      else
+        fs::remove(fresh);
     }
 
     void print_metrics(const TradeTable &t, std::ostream &out)
@@ -307,7 +306,7 @@ namespace pumpd::coupling
     };
   } // namespace
 
-  TradeTable run_study(const std::string &scene_file, const std::string &executable, std::ostream &out)
+  void run_study(const std::string &scene_file, const std::string &executable, std::ostream &out)
   {
     Study                 study(scene_file, executable, out);
     std::vector<TradeRow> rows;
@@ -318,14 +317,12 @@ namespace pumpd::coupling
     const TradeTable  table     = judge(std::move(rows), study.tolerance());
     write_csv(table, directory + "/trade.csv");
     write_markdown(table, scene_file, directory + "/trade.md");
-    if (!plotted_already(table, directory))
-      plot(directory, out);
+    plot_if_changed(table, directory, out);
     out << "study: trade.csv, trade.md, trade.png in " << directory << "\n"
         << "pumpd-metric study.runs " << study.size() << "\n"
         << "pumpd-metric study.reused " << study.reused() << "\n"
         << "pumpd-metric study.seconds " << study.seconds() << "\n";
     print_metrics(table, out);
     out << "study: recommended: " << recommendation(table) << std::endl;
-    return table;
   }
 } // namespace pumpd::coupling

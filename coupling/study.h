@@ -1,4 +1,4 @@
-// The speed/accuracy trade of a scene, as one command: `pumpd --study <scene.prm>` (issue 14).
+// The speed/accuracy trade of a scene, as one command: `pumpd --study <scene.prm>`.
 // The scene file is the input as for a single run; its section `Study` (study_settings.h) says
 // what to try. The study runs, each as a child process of the same executable on a scene file it
 // writes into the study's output directory:
@@ -20,12 +20,10 @@
 #include <iosfwd>
 #include <string>
 
-#include "trade_table.h"
-
 namespace pumpd::coupling
 {
   /// The study of `scene_file`, each run by `executable` (pumpd). Progress, the recommendation and
   /// pumpd-metric lines to `out`, line by line. Throws InvalidParameter or deal.II's exceptions
   /// for bad input, before any run.
-  TradeTable run_study(const std::string &scene_file, const std::string &executable, std::ostream &out);
+  void run_study(const std::string &scene_file, const std::string &executable, std::ostream &out);
 } // namespace pumpd::coupling

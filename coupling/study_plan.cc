@@ -6,9 +6,7 @@
 #include <sstream>
 
 #include "error.h"
-#include "lattice.h"
-#include "material.h"
-#include "model.h"
+#include "full_pd.h"
 #include "parameter_table.h"
 #include "study_record.h"
 
@@ -73,12 +71,9 @@ namespace pumpd::coupling
     /// Full PD = yes, skipped under auto).
     void check_memory(PlannedRun &run, const Scene &scene, const std::string &full_pd)
     {
-      const auto                &pd = run.parameters.pd;
-      const local::Lattice       grid(scene.body.bounding_box(), pd.spacing(), pd.horizon_over_spacing);
-      const local::LiptonMaterial material(pd.material(scene.material), pd.horizon);
-      const double bytes = local::estimated_model_bytes(grid, local::make_half_stencil(pd.horizon_over_spacing, material));
-      const double available = 0.8 * local::available_memory();
-      run.full_pd_nodes      = scene.body.area() / (pd.spacing() * pd.spacing());
+      const auto &pd                = run.parameters.pd;
+      const auto [bytes, available] = full_pd_memory(scene, pd);
+      run.full_pd_nodes             = scene.body.area() / (pd.spacing() * pd.spacing());
       if (bytes <= available)
         return;
       std::ostringstream why;

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "csv.h"
+#include "text.h"
 
 namespace pumpd::coupling
 {
@@ -26,25 +27,17 @@ namespace pumpd::coupling
       s << std::hex << std::setw(16) << std::setfill('0') << h;
       return s.str();
     }
-
-    std::string contents(const std::string &file)
-    {
-      std::ifstream      in(file, std::ios::binary);
-      std::ostringstream s;
-      s << in.rdbuf();
-      return s.str();
-    }
   } // namespace
 
   std::string file_hash(const std::string &file)
   {
-    std::ifstream in(file, std::ios::binary);
-    return in ? hex(fnv1a(contents(file))) : "";
+    const auto bytes = file_contents(file);
+    return bytes ? hex(fnv1a(*bytes)) : "";
   }
 
   std::string run_key(const std::string &program_version, const std::string &scene_text, const std::string &mesh_file)
   {
-    return hex(fnv1a(contents(mesh_file), fnv1a(scene_text, fnv1a(program_version))));
+    return hex(fnv1a(file_contents(mesh_file).value_or(""), fnv1a(scene_text, fnv1a(program_version))));
   }
 
   std::map<std::string, double> read_metrics(const std::string &log)
@@ -65,20 +58,9 @@ namespace pumpd::coupling
   std::vector<RunRecord> read_records(const std::string &file)
   {
     std::vector<RunRecord> records;
-    std::ifstream          in(file);
-    std::string            line;
-    std::getline(in, line); // the header
-    while (std::getline(in, line))
-      {
-        std::istringstream       row(line);
-        std::vector<std::string> f;
-        for (std::string field; std::getline(row, field, ',');)
-          f.push_back(field);
-        if (f.size() != 9)
-          continue; // a row cut short by an interruption
-        records.push_back({f[0], f[1], f[2], f[3], std::stod(f[4]), std::stod(f[5]), std::stod(f[6]), std::stod(f[7]),
-                           std::stod(f[8])});
-      }
+    for (auto &r : read_csv_rows(file))
+      records.push_back({r["run"], r["key"], r["method"], r["status"], std::stod(r["wall_s"]), std::stod(r["peak_mib"]),
+                         std::stod(r["pd_node_steps"]), std::stod(r["global_dofs"]), std::stod(r["pd_seconds"])});
     return records;
   }
 

@@ -1,12 +1,12 @@
 #include "trade_table.h"
 
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
 
+#include "csv.h"
 #include "scene.h"
 
 namespace pumpd::coupling
@@ -78,29 +78,14 @@ namespace pumpd::coupling
     }
   } // namespace
 
-  PathDistance trade_distance(const geometry::Polyline &a, const geometry::Polyline &b)
-  {
-    const bool   a_longer = geometry::length(a) > geometry::length(b);
-    const auto  &shorter  = a_longer ? b : a;
-    const auto   longer   = up_to_nearest(a_longer ? a : b, shorter.back());
-    const double step     = std::max(geometry::length(shorter), geometry::length(longer)) / 1000.;
-    return path_distance(longer, shorter, std::max(step, 1e-9));
-  }
-
   void read_run_output(const std::string &directory, TradeRow &row)
   {
     if (std::filesystem::exists(directory + "/crack_path.csv"))
       row.path = read_path(directory + "/crack_path.csv");
-    // step,lambda,load,displacement,crack_length_m,tip_x_m,tip_y_m
-    std::ifstream in(directory + "/load_displacement.csv");
-    std::string   line;
-    std::getline(in, line);
     double first_length = std::numeric_limits<double>::quiet_NaN();
-    while (std::getline(in, line))
+    for (auto &r : read_csv_rows(directory + "/load_displacement.csv"))
       {
-        double step, lambda, load, displacement, length;
-        if (std::sscanf(line.c_str(), "%lf,%lf,%lf,%lf,%lf", &step, &lambda, &load, &displacement, &length) != 5)
-          continue;
+        const double load = std::stod(r["load"]), length = std::stod(r["crack_length_m"]);
         if (std::isnan(first_length))
           first_length = length;
         const bool grown = row.record.method != "full-pd" || length > first_length + 1e-9;
@@ -139,16 +124,15 @@ namespace pumpd::coupling
 
   void write_csv(const TradeTable &table, const std::string &file)
   {
-    std::ofstream out(file);
-    for (std::size_t c = 0; c < std::size(columns); ++c)
-      out << (c ? "," : "") << columns[c];
-    out << "\n";
+    std::string header;
+    for (const auto *c : columns)
+      header += (header.empty() ? "" : ",") + std::string(c);
+    CsvFile csv(file, header);
     for (std::size_t i = 0; i < table.rows.size(); ++i)
       {
-        const auto row = cells(table.rows[i], table.recommended == i);
-        for (std::size_t c = 0; c < row.size(); ++c)
-          out << (c ? "," : "") << (c == 2 ? "\"" + row[c] + "\"" : row[c]);
-        out << "\n";
+        auto row = cells(table.rows[i], table.recommended == i);
+        row[2]   = "\"" + row[2] + "\""; // the setting may hold commas
+        csv.row(row);
       }
   }
 

@@ -4,7 +4,7 @@
 //   full PD:      the full-PD run with the smallest PD spacing
 //   recommended:  the cheapest run (wall time) within the tolerance (mean distance) of the finest
 // Two paths are compared over the shorter one's extent: the longer is cut at its point nearest the
-// other's tip (path_metrics.h, up_to_nearest).
+// other's tip (path_metrics.h, trade_distance).
 #pragma once
 
 #include <limits>
@@ -35,10 +35,6 @@ namespace pumpd::coupling
     std::optional<std::size_t> finest, full_pd, recommended;
     double                     tolerance = 0.; ///< [m]
   };
-
-  /// Symmetric mean and Hausdorff distance of two paths over the shorter one's extent, sampled
-  /// every thousandth of the longer.
-  PathDistance trade_distance(const geometry::Polyline &a, const geometry::Polyline &b);
 
   /// Reads a run's crack_path.csv and load_displacement.csv from its output directory into the
   /// row: the load at first growth (the first row, or for full PD the first whose crack is longer

@@ -343,8 +343,9 @@ namespace pumpd::global
     if (settings_.type == SolverSettings::Type::direct)
       {
         // Symmetric diagonal scaling D A D y = D f, D = diag(A)^-1/2, x = D y: the enriched
-        // unknowns' diagonals are orders of magnitude below the standard ones, which makes
-        // UMFPACK reject diagonal pivots and lose the fill-reducing ordering.
+        // unknowns' diagonals are orders of magnitude below the standard ones; scaled, every
+        // diagonal is 1, for the Cholesky factorization and for the LU fallback, whose diagonal
+        // pivots (and with them its fill-reducing ordering) need it.
         Vector<double> scale(n_dofs), scaled_rhs(rhs);
         for (unsigned int i = 0; i < n_dofs; ++i)
           scale(i) = matrix.diag_element(i) > 0. ? 1. / std::sqrt(matrix.diag_element(i)) : 1.;

@@ -17,7 +17,8 @@ namespace pumpd::global
 {
   /// x = A^-1 b for a symmetric positive definite A (both triangles stored, only the upper one is
   /// read). Returns false and leaves x as it was when CHOLMOD finds A not positive definite
-  /// (numerically), so the caller can fall back to an LU solve.
+  /// (numerically), so the caller can fall back to an LU solve. Throws std::runtime_error when
+  /// CHOLMOD fails otherwise (out of memory, a matrix too large for its integers).
   bool solve_cholesky(const dealii::SparseMatrix<double> &A, const dealii::Vector<double> &b,
                       dealii::Vector<double> &x);
 } // namespace pumpd::global

@@ -4,10 +4,6 @@
 #include <deal.II/grid/reference_cell.h>
 #include <deal.II/grid/tria.h>
 
-#include <fcntl.h>
-#include <spawn.h>
-#include <sys/wait.h>
-
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -23,8 +19,7 @@
 #include <sstream>
 
 #include "error.h"
-
-extern char **environ;
+#include "program.h"
 
 namespace pumpd::global
 {
@@ -58,19 +53,14 @@ namespace pumpd::global
       fs::path path_;
     };
 
-    /// The first line of gmsh's output that reports an error, else its last non-empty line.
+    /// The first line of gmsh's output that reports an error, else its last non-blank line.
     std::string gmsh_message(const fs::path &log)
     {
       std::ifstream in(log);
-      std::string   line, last;
-      while (std::getline(in, line))
-        {
-          if (line.rfind("Error", 0) == 0)
-            return one_line(line);
-          if (line.find_first_not_of(" \t\r") != std::string::npos)
-            last = line;
-        }
-      return one_line(last);
+      for (std::string line; std::getline(in, line);)
+        if (line.rfind("Error", 0) == 0)
+          return one_line(line);
+      return one_line(last_line(log));
     }
 
     /// Runs gmsh on a .geo file with `mode` ("-2": mesh in 2D, msh2; "-0": the unrolled
@@ -87,45 +77,24 @@ namespace pumpd::global
       if (characteristic_length > 0.)
         args.insert(args.end(), {"-setnumber", "h", to_text(characteristic_length, 17)});
       args.insert(args.end(), {"-o", out.string(), file});
-      std::vector<char *> argv;
-      for (auto &a : args)
-        argv.push_back(a.data());
-      argv.push_back(nullptr);
-
-      posix_spawn_file_actions_t actions;
-      posix_spawn_file_actions_init(&actions);
-      posix_spawn_file_actions_addopen(&actions, 0, "/dev/null", O_RDONLY, 0);
-      posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_TRUNC,
-                                       0644);
-      posix_spawn_file_actions_adddup2(&actions, 1, 2);
-      pid_t     pid   = 0;
-      const int spawn = posix_spawnp(&pid, gmsh.c_str(), &actions, nullptr, argv.data(), environ);
-      posix_spawn_file_actions_destroy(&actions);
-      if (spawn != 0)
+      const ProgramRun run = run_program(args, log.string());
+      if (run.start_error != 0)
         throw InvalidParameter("Mesh file", file,
                                "meshing a .geo needs the gmsh executable, but '" + gmsh +
-                                 "' could not be started (" + std::strerror(spawn) +
+                                 "' could not be started (" + std::strerror(run.start_error) +
                                  "); install gmsh or set PUMPD_GMSH");
-
-      int status = 0;
-      while (waitpid(pid, &status, 0) < 0)
-        if (errno != EINTR)
-          throw InvalidParameter("Mesh file", file,
-                                 "waiting for gmsh failed: " + std::string(std::strerror(errno)));
-
-      if (WIFSIGNALED(status))
+      if (run.signal != 0)
         throw InvalidParameter("Mesh file", file,
-                               "gmsh was killed by signal " + std::to_string(WTERMSIG(status)) +
+                               "gmsh was killed by signal " + std::to_string(run.signal) +
                                  ": " + gmsh_message(log));
-      const int exit_status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
       std::error_code ignored;
-      if (exit_status == 127 && fs::file_size(log, ignored) == 0)
+      if (run.exit_code == 127 && fs::file_size(log, ignored) == 0)
         throw InvalidParameter("Mesh file", file,
                                "meshing a .geo needs the gmsh executable, but '" + gmsh +
                                  "' was not found; install gmsh or set PUMPD_GMSH");
-      if (exit_status != 0)
+      if (run.exit_code != 0)
         throw InvalidParameter("Mesh file", file,
-                               "gmsh failed with exit status " + std::to_string(exit_status) +
+                               "gmsh failed with exit status " + std::to_string(run.exit_code) +
                                  ": " + gmsh_message(log));
       if (!fs::is_regular_file(out))
         throw InvalidParameter("Mesh file", file,

@@ -110,6 +110,11 @@ namespace pumpd::local
     return n * 24. * 8. + 5. * double(st.size()) * n / 8.;
   }
 
+  ModelMemory model_memory(const Lattice &grid, const Stencil &st)
+  {
+    return {estimated_model_bytes(grid, st), 0.8 * available_memory()};
+  }
+
   PrescribedRegion PrescribedRegion::disk(std::string name, geometry::Point centre, double radius, bool fix_x,
                                           bool fix_y)
   {
@@ -197,7 +202,7 @@ namespace pumpd::local
     volume         = h * h;
     // Refuse a lattice this machine cannot hold before allocating it; memory grows like m^4 at a
     // fixed horizon (nodes and bonds per node each like m^2).
-    const double bytes = estimated_model_bytes(grid, st), available = 0.8 * available_memory();
+    const auto [bytes, available] = model_memory(grid, st);
     if (bytes > available)
       {
         const int m_max = int(std::floor(horizon_ratio * std::pow(available / bytes, 0.25)));

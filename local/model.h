@@ -29,9 +29,16 @@ namespace pumpd::local
   double available_memory();
   /// What a model on this lattice and stencil and a run on it hold [bytes]: per stored node 24
   /// doubles (state, masks, the integrators' and the cycle's copies), per bond of the half stencil
-  /// 5 bits (existence, initial cracks, no-fail zones, broken in two states). PdModel refuses a
-  /// lattice for which this exceeds 0.8 available_memory().
+  /// 5 bits (existence, initial cracks, no-fail zones, broken in two states).
   double estimated_model_bytes(const Lattice &grid, const Stencil &st);
+
+  /// A model's memory against this machine's [bytes]: estimated_model_bytes, and the 0.8
+  /// available_memory() it may take. PdModel refuses a lattice that needs more.
+  struct ModelMemory
+  {
+    double needed = 0., available = 0.;
+  };
+  ModelMemory model_memory(const Lattice &grid, const Stencil &st);
 
   /// Where the PD box sits: the body it cuts out of, the box, and the cracks already there.
   struct Region

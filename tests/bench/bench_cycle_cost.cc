@@ -1,4 +1,4 @@
-// Issue 13: what the default resolution costs, as two ratios of runs made in this one process
+// What the default resolution costs, as two ratios of runs made in this one process
 // (label bench: timings only; outputs under <build>/tests/bench/bench_cycle_cost_output/<run>/).
 // - coupling.case3.default_over_fixed4mm_time: Case III at the default (prm/ingraffea-case3.prm,
 //   the resolution rule) over the same scene with the section's fixed 4 mm horizon (Rule = fixed).
@@ -24,20 +24,12 @@ namespace
 {
   const std::string output = "bench_cycle_cost_output";
 
+  /// The run's own totals under the name of its case.
   void print_parts(const std::string &prefix, const CycleRun &c)
   {
-    if (!c.r)
-      return;
-    metric(prefix + ".seconds_total", c.r->seconds);
-    metric(prefix + ".pd_node_steps", c.r->pd_node_steps);
-    double global = 0., pd = 0.;
-    for (const auto &e : c.r->exchanges)
-      {
-        global += e.seconds_global;
-        pd += e.seconds_pd;
-      }
-    metric(prefix + ".seconds_global", global);
-    metric(prefix + ".seconds_pd", pd);
+    if (c.r)
+      for (const std::string name : {"seconds_total", "pd_node_steps", "seconds_global", "seconds_pd"})
+        metric(prefix + "." + name, c.metrics.at("coupling." + name));
   }
 } // namespace
 

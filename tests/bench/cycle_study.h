@@ -11,7 +11,9 @@
 #include <filesystem>
 #include <iostream>
 #include <limits>
+#include <map>
 #include <optional>
+#include <sstream>
 #include <streambuf>
 #include <string>
 
@@ -28,11 +30,13 @@ namespace pumpd::study
   inline const double not_a_number = std::numeric_limits<double>::quiet_NaN();
 
   /// Forwards everything to std::cout line by line; a line that run_global_local starts with
-  /// "pumpd-metric " (no case name) is shown as "  [run] ..." instead.
+  /// "pumpd-metric " (no case name) is shown as "  [run] ..." instead, and kept by name.
   class RunOutput : public std::streambuf
   {
   public:
     ~RunOutput() override { flush_line(); }
+
+    std::map<std::string, double> metrics;
 
   protected:
     int overflow(int c) override
@@ -57,7 +61,14 @@ namespace pumpd::study
         return;
       const std::string tag = "pumpd-metric ";
       if (line.compare(0, tag.size(), tag) == 0)
-        line = "  [run] " + line.substr(tag.size());
+        {
+          std::istringstream words(line.substr(tag.size()));
+          std::string        name;
+          double             value = 0.;
+          if (words >> name >> value)
+            metrics[name] = value;
+          line = "  [run] " + line.substr(tag.size());
+        }
       std::cout << line << std::flush;
       line.clear();
     }
@@ -97,6 +108,7 @@ namespace pumpd::study
     std::string                                name;
     coupling::Parameters                       p;
     std::optional<coupling::GlobalLocalResult> r; ///< empty if the run threw
+    std::map<std::string, double>              metrics; ///< its pumpd-metric lines, by name
   };
 
   inline Polyline initial_crack(const coupling::Parameters &p) { return coupling::build_scene(p.scene).crack(); }
@@ -112,7 +124,7 @@ namespace pumpd::study
               << c.box.max_size << "), advance " << c.exchange.min_advance << " ... " << c.exchange.max_advance
               << " m (near " << c.exchange.near_distance << " m), max exchanges " << c.max_exchanges << ", output "
               << p.scene.output_directory << std::endl;
-    CycleRun result{name, p, std::nullopt};
+    CycleRun result{name, p, std::nullopt, {}};
     RunOutput    buffer;
     std::ostream progress(&buffer);
     try
@@ -127,6 +139,7 @@ namespace pumpd::study
         return result;
       }
     progress.flush();
+    result.metrics     = buffer.metrics;
     const auto  &r     = *result.r;
     const double grown = geometry::length(r.path) - geometry::length(initial_crack(p));
     std::cout << "=== " << name << ": " << r.exchanges.size() << " exchanges, crack " << geometry::length(r.path)

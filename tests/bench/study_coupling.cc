@@ -1,4 +1,4 @@
-// Issue 4, "Measured" 1-3: the global-local cycle (coupling/global_local.h) on the Ingraffea &
+// The global-local cycle (coupling/global_local.h) on the Ingraffea &
 // Grigoriu beam, Cases I-III, at the resolution of the scene files, and the convergence of the
 // Case II path under the PD spacing and under the horizon. Label study (not in CI): each full case
 // takes minutes.
@@ -107,7 +107,7 @@ namespace
     metric(prefix + ".seconds_total", total);
   }
 
-  /// The PD work of a convergence run, as text (the metric names of the issue are per case only).
+  /// The PD work of a convergence run, as text (the metric names are per case only).
   void work_summary(const CycleRun &run)
   {
     if (!run.r)

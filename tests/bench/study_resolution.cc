@@ -1,4 +1,4 @@
-// Issue 13: the right crack path at the default settings, and what it costs. Label study (not in
+// The right crack path at the default settings, and what it costs. Label study (not in
 // CI): the runs take minutes each. Every run starts from prm/ingraffea-caseN.prm (the default
 // settings: the resolution rule of coupling/resolution.h); outputs under
 // <build>/tests/bench/study_resolution_output/<run>/.
@@ -17,7 +17,6 @@
 #include <deal.II/base/multithread_info.h>
 
 #include <iostream>
-#include <map>
 #include <string>
 
 #include "cycle_study.h"
@@ -28,20 +27,6 @@ using namespace pumpd::study;
 namespace
 {
   const std::string output = "study_resolution_output";
-
-  std::map<int, CycleRun> &default_runs()
-  {
-    static std::map<int, CycleRun> r;
-    return r;
-  }
-
-  const CycleRun &default_run(int n)
-  {
-    auto it = default_runs().find(n);
-    if (it == default_runs().end())
-      it = default_runs().emplace(n, run(output, "case" + std::to_string(n), from_prm("ingraffea-case" + std::to_string(n) + ".prm"))).first;
-    return it->second;
-  }
 
   /// Every horizon the rule chooses halved (header, 2).
   coupling::Parameters half_horizon(coupling::Parameters p)
@@ -54,7 +39,8 @@ namespace
 
   void case_metrics(int n)
   {
-    const CycleRun   &c      = default_run(n);
+    const std::string prm    = "ingraffea-case" + std::to_string(n) + ".prm";
+    const CycleRun    c      = run(output, "case" + std::to_string(n), from_prm(prm));
     const std::string prefix = "coupling.case" + std::to_string(n);
     sanity(c);
     std::cout << "Case " << n << " stop reason: " << (c.r ? c.r->stop_reason : "(the run threw)") << std::endl;
@@ -69,7 +55,7 @@ namespace
     metric(prefix + ".seconds_total", c.r ? c.r->seconds : not_a_number);
 
     const CycleRun half = run(output, "case" + std::to_string(n) + "_half_horizon",
-                              half_horizon(from_prm("ingraffea-case" + std::to_string(n) + ".prm")));
+                              half_horizon(from_prm(prm)));
     sanity(half);
     metric(prefix + ".path_change_half_horizon_mm", 1e3 * path_change(half, c));
     metric(prefix + ".half_horizon_seconds_total", half.r ? half.r->seconds : not_a_number);

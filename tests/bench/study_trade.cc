@@ -1,4 +1,4 @@
-// Speed against accuracy on Ingraffea Case II (issues 5 and 14): `pumpd --study
+// Speed against accuracy on Ingraffea Case II: `pumpd --study
 // prm/ingraffea-case2.prm` (the scene's section Study: LEFM growth, the cycle at the default and
 // at twelve settings, full PD at horizons 8 and 4 mm, the reference), then its trade.csv,
 // trade.md and trade.png copied into docs/. Runs done by an earlier study of the same program are
@@ -13,7 +13,7 @@
 #include <filesystem>
 #include <string>
 
-#include "csv_rows.h"
+#include "csv.h"
 #include "metric.h"
 
 TEST(StudyTrade, CaseTwoDefaultWithinOneMillimetreOfFullPd)
@@ -25,7 +25,7 @@ TEST(StudyTrade, CaseTwoDefaultWithinOneMillimetreOfFullPd)
     std::filesystem::copy_file(directory + "/" + file, std::string("docs/") + file,
                                std::filesystem::copy_options::overwrite_existing);
 
-  for (auto &row : pumpd::test::read_csv_rows(directory + "/trade.csv"))
+  for (auto &row : pumpd::read_csv_rows(directory + "/trade.csv"))
     {
       EXPECT_EQ(row["status"], "ok") << row["run"];
       if (row["run"] == "fullpd-delta8")

@@ -1,5 +1,5 @@
-// Stability at the extremes, coupled scenes (issue 5, "Stability at the extremes" and "Model only
-// what a scene requires"). Each case asserts its numbers with the tolerance stated next to it.
+// Stability at the extremes, coupled scenes ("Stability at the extremes" and "Model only what a
+// scene requires"). Each case asserts its numbers with the tolerance stated next to it.
 // The global-local runs use the coarse set-up of global_local_test.cc (PD m = 4, h = 1 mm,
 // delta = 4 mm, global mesh size 16 mm) and stop after a few exchanges where the full path is not
 // the point, to keep the whole file within the CI budget.

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "csv_rows.h"
+#include "csv.h"
 #include "metric.h"
 
 namespace
@@ -34,7 +34,7 @@ TEST(Study, CoarseSentStudyRecommendsWithinTheToleranceAndReusesItsRuns)
 {
   std::filesystem::remove_all(directory);
   const double first = study();
-  auto         rows  = pumpd::test::read_csv_rows(directory + "/trade.csv");
+  auto         rows  = pumpd::read_csv_rows(directory + "/trade.csv");
   ASSERT_EQ(rows.size(), 4u);
   const std::vector<std::string> names = {"lefm", "default", "m3", "m5"};
   int                            recommended = 0;
@@ -56,7 +56,7 @@ TEST(Study, CoarseSentStudyRecommendsWithinTheToleranceAndReusesItsRuns)
   EXPECT_TRUE(std::filesystem::exists(directory + "/trade.png"));
 
   const double second = study();
-  for (auto &row : pumpd::test::read_csv_rows(directory + "/trade.csv"))
+  for (auto &row : pumpd::read_csv_rows(directory + "/trade.csv"))
     EXPECT_EQ(row["reused"], "yes") << row["run"];
   pumpd::test::metric("study.first_seconds", first);
   pumpd::test::metric("study.reuse_time_fraction", second / first);
@@ -74,6 +74,6 @@ TEST(Study, CoarseSentStudyRecommendsWithinTheToleranceAndReusesItsRuns)
     out << line << "\n";
   out.close();
   study();
-  for (auto &row : pumpd::test::read_csv_rows(directory + "/trade.csv"))
+  for (auto &row : pumpd::read_csv_rows(directory + "/trade.csv"))
     EXPECT_EQ(row["reused"], row["run"] == "lefm" ? "no" : "yes") << row["run"];
 }

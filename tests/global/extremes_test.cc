@@ -1,5 +1,5 @@
-// Stability at the extremes, global solver (issue 5, "Stability at the extremes" and "Model only
-// what a scene requires"):
+// Stability at the extremes, global solver ("Stability at the extremes" and "Model only what a
+// scene requires"):
 // (a) Poisson's ratio 0 and 0.4999 in plane strain on the SENT specimen of sif_test.cc (strip
 //     [0, 1] x [-2, 2], a/W = 0.5, sigma = 1 on top and bottom, 40 x 160 cells stretched to put the
 //     crack at a generic position, refined twice near the tip; K_I from Tada, Paris & Irwin,

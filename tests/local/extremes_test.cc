@@ -1,4 +1,4 @@
-// Stability at the extremes, PD co-solver (issue 5):
+// Stability at the extremes, PD co-solver:
 // (a) Velocity Verlet at 0.99 and 1.01 of the Silling-Askari bound: 1.01 is refused
 //     (InvalidParameter naming "PD time step"); 0.99 runs 2000 steps of a box stretched through
 //     its boundary layer (ramped over 300 steps, then held) and stays bounded: the energy balance

@@ -1,0 +1,30 @@
+// Another program run as a child process (posix_spawn: no fork of this process's memory, safe
+// after MPI start-up), its output to a log file, measured as the operating system sees it: wall
+// time and the peak resident memory (wait4's ru_maxrss of the child and its waited-for children).
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace pumpd
+{
+  struct ProgramRun
+  {
+    int    start_error = 0;  ///< errno of a failed start (0: it started)
+    int    exit_code   = -1; ///< -1: not started, or killed by a signal
+    int    signal      = 0;  ///< the signal that killed it (0: none)
+    double seconds     = 0.;
+    double peak_memory = 0.; ///< [MiB]
+  };
+
+  /// Runs argv[0] (searched on the PATH unless it holds a '/') with the arguments argv[1...], stdin
+  /// from /dev/null, stdout and stderr to `log` (created anew), and waits for it. Throws
+  /// std::runtime_error if `log` cannot be written or waiting fails.
+  ProgramRun run_program(const std::vector<std::string> &argv, const std::string &log);
+
+  /// The last line of a file that is not blank ("" if none).
+  std::string last_line(const std::string &file);
+
+  /// The path of the running executable (/proc/self/exe resolved).
+  std::string this_executable();
+} // namespace pumpd

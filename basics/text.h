@@ -1,0 +1,14 @@
+// Text of files: a file's bytes, and entries and their parts without surrounding white space.
+#pragma once
+
+#include <optional>
+#include <string>
+
+namespace pumpd
+{
+  /// `s` without leading and trailing blanks, tabs and line ends.
+  std::string trim(const std::string &s);
+
+  /// The bytes of a file (none if it cannot be read).
+  std::optional<std::string> file_contents(const std::string &file);
+} // namespace pumpd

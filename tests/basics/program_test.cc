@@ -1,0 +1,56 @@
+// run_program: exit status, signal, a program that cannot start, its output in the log, stdin
+// from /dev/null; last_line.
+#include <gtest/gtest.h>
+
+#include <cerrno>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+
+#include "program.h"
+
+namespace
+{
+  const std::string log_file = (std::filesystem::temp_directory_path() / "pumpd_program_test.log").string();
+}
+
+TEST(RunProgram, ExitStatusAndOutput)
+{
+  const auto run = pumpd::run_program({"sh", "-c", "echo first; echo second >&2; echo; exit 3"}, log_file);
+  EXPECT_EQ(run.start_error, 0);
+  EXPECT_EQ(run.exit_code, 3);
+  EXPECT_EQ(run.signal, 0);
+  EXPECT_GT(run.peak_memory, 0.);
+  EXPECT_EQ(pumpd::last_line(log_file), "second");
+}
+
+TEST(RunProgram, ReadsNothingFromStdin)
+{
+  EXPECT_EQ(pumpd::run_program({"/bin/sh", "-c", "cat"}, log_file).exit_code, 0);
+}
+
+TEST(RunProgram, KilledBySignal)
+{
+  const auto run = pumpd::run_program({"/bin/sh", "-c", "kill -9 $$"}, log_file);
+  EXPECT_EQ(run.exit_code, -1);
+  EXPECT_EQ(run.signal, 9);
+}
+
+TEST(RunProgram, NotStarted)
+{
+  const auto run = pumpd::run_program({"/no/such/program"}, log_file);
+  EXPECT_EQ(run.start_error, ENOENT);
+  EXPECT_EQ(run.exit_code, -1);
+}
+
+TEST(RunProgram, LogNotWritable)
+{
+  EXPECT_THROW(pumpd::run_program({"true"}, "/no/such/directory/log"), std::runtime_error);
+}
+
+TEST(LastLine, NoneInAnEmptyFile)
+{
+  std::ofstream(log_file) << " \n\t\n";
+  EXPECT_EQ(pumpd::last_line(log_file), "");
+  EXPECT_EQ(pumpd::last_line("/no/such/file"), "");
+}
