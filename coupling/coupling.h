@@ -4,6 +4,7 @@
 //   scene.h               the specimen from the .prm and its mesh: body, conditions, cracks, report
 //   parameters.h          every section of a scene file, and run(): the method on the scene
 //   global_problem.h      XFEM on the whole body: tip states per unit load, the critical load
+//   initiation.h          where a crack starts in a body without one: the PD strength against sigma_1
 //   lefm_growth.h         LEFM crack growth (XFEM + maximum hoop stress, no PD)
 //   global_local.h        the global-local cycle: XFEM drives a PD box at the tip
 //     resolution.h          the horizon of each box, chosen by the clearance and the holes ahead
@@ -38,6 +39,7 @@
 #include "full_pd.h"
 #include "global_local.h"
 #include "global_problem.h"
+#include "initiation.h"
 #include "lefm_growth.h"
 #include "parameters.h"
 #include "path_metrics.h"

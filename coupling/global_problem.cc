@@ -126,13 +126,7 @@ namespace pumpd::coupling
       }
     mesh_for(tips);
     problem->set_crack(crack);
-    problem->setup();
-    problem->assemble();
-    global::SolverSettings solver;
-    if (settings.linear_solver == "cg-amg")
-      solver.type = global::SolverSettings::Type::cg_amg;
-    problem->solve(solver);
-    lambda = settings.reference_load_factor;
+    solve_current();
 
     std::vector<TipState> states;
     const auto            sifs = problem->stress_intensity_factors();
@@ -149,6 +143,24 @@ namespace pumpd::coupling
         states.push_back(s);
       }
     return states;
+  }
+
+  void GlobalProblem::solve_uncracked()
+  {
+    mesh_for({});
+    problem->set_crack(std::nullopt);
+    solve_current();
+  }
+
+  void GlobalProblem::solve_current()
+  {
+    problem->setup();
+    problem->assemble();
+    global::SolverSettings solver;
+    if (settings.linear_solver == "cg-amg")
+      solver.type = global::SolverSettings::Type::cg_amg;
+    problem->solve(solver);
+    lambda = settings.reference_load_factor;
   }
 
   std::vector<geometry::Point> GlobalProblem::displacement_per_unit_load(const std::vector<geometry::Point> &points)

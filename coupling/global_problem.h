@@ -67,6 +67,8 @@ namespace pumpd::coupling
     /// the earlier tips within the refinement trail of a tip), sets up the enrichment and solves
     /// at lambda_ref: the state of every tip (in the crack's tip order).
     std::vector<TipState> solve(const global::Crack &crack);
+    /// Solves the body without a crack at lambda_ref, on the scene's mesh.
+    void solve_uncracked();
     /// The refinements solve() made, in order.
     const std::vector<Refinement> &refinements() const { return history; }
     /// Takes the refinements of an earlier run (resume): the next solve() meshes as that run's did.
@@ -94,6 +96,8 @@ namespace pumpd::coupling
     void refine(const Refinement &r);
     /// The enriched problem on the current mesh under the scene's conditions.
     void make_problem();
+    /// Sets up, assembles and solves the current problem at lambda_ref.
+    void solve_current();
 
     const Scene                                  &scene;
     GlobalSettings                                settings;

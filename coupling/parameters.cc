@@ -5,6 +5,8 @@
 #include <ostream>
 #include <sstream>
 
+#include "error.h"
+
 namespace pumpd::coupling
 {
   void Parameters::add_parameters(dealii::ParameterHandler &prm)
@@ -23,6 +25,7 @@ namespace pumpd::coupling
     global.add_parameters(prm);
     pd.add_parameters(prm);
     growth.add_parameters(prm);
+    initiation.add_parameters(prm);
     lefm.add_parameters(prm);
     cycle.add_parameters(prm);
     full_pd.add_parameters(prm);
@@ -58,6 +61,15 @@ namespace pumpd::coupling
         return;
       }
     const Scene scene = build_scene(p.scene);
+    if (scene.cracks.empty())
+      {
+        report_initiation(find_initiation(scene, p.global, p.pd, p.initiation), scene, out);
+        throw InvalidParameter("Initial cracks", "none",
+                               "growing a crack from an initiation site is not built yet: the candidate sites are "
+                               "listed above" +
+                                 std::string(scene.output_directory.empty() ? "" : " and in " + scene.output_directory + "/initiation_sites.csv") +
+                                 "; give the crack to grow as Initial cracks");
+      }
     if (p.method == "lefm-growth")
       run_lefm_growth(scene, p.lefm_growth_settings(), out);
     else if (p.method == "global-local")

@@ -6,6 +6,7 @@
 //   Global               XFEM (global_problem.h)
 //   Peridynamics         the PD body (pd_settings.h)
 //   Crack growth         where growth stops (growth_settings.h)
+//   Initiation           where a crack would start in a scene without one (initiation.h)
 //   LEFM growth, Global-local, Full PD, Edge crack   each method's own
 //   Study                what pumpd --study runs (study_settings.h)
 #pragma once
@@ -15,6 +16,7 @@
 
 #include "full_pd.h"
 #include "global_local.h"
+#include "initiation.h"
 #include "lefm_growth.h"
 #include "pd_edge_crack.h"
 #include "scene.h"
@@ -34,6 +36,7 @@ namespace pumpd::coupling
     GlobalSettings        global;
     PeridynamicsSettings  pd;
     GrowthSettings        growth;
+    InitiationSettings    initiation;
     LefmSettings          lefm;
     CycleSettings         cycle;
     FullPdControlSettings full_pd;
@@ -54,6 +57,8 @@ namespace pumpd::coupling
   Parameters parse_parameters(const std::string &text);
 
   /// Runs the method on the scene: builds the scene from the mesh, then calls run_lefm_growth,
-  /// run_global_local, run_full_pd or run_edge_crack. Progress and a closing line to `out`.
+  /// run_global_local, run_full_pd or run_edge_crack. Progress and a closing line to `out`. A
+  /// scene without a crack gets its initiation sites (initiation.h), printed and written, and
+  /// stops with InvalidParameter naming "Initial cracks": growth from a site is not built yet.
   void run(const Parameters &parameters, std::ostream &out);
 } // namespace pumpd::coupling

@@ -62,7 +62,8 @@ namespace pumpd::coupling
     prm.add_parameter("Initial cracks", initial_cracks,
                       "Crack polylines \"x1,y1; x2,y2; ...\" [m], several separated by |. An end on the outline or on "
                       "a hole's rim is a mouth, every other end a tip; vertices inside the body, segments crossing "
-                      "neither the outline nor a hole. Empty: no crack.",
+                      "neither the outline nor a hole. Empty: no crack; pumpd then lists where one would start (section "
+                      "Initiation) and stops.",
                       Patterns::Anything());
     prm.add_parameter("Output directory", output_directory,
                       "Where the results go (created if missing).", Patterns::DirectoryName());

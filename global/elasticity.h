@@ -91,6 +91,14 @@ namespace pumpd::global
     double          k2 = 0.;
   };
 
+  /// The stress at a vertex of the mesh [Pa].
+  struct NodalStress
+  {
+    geometry::Point at;
+    double          xx = 0., yy = 0., xy = 0.;
+    double          cell_size = 0.; ///< largest diameter of the cells that share the vertex [m]
+  };
+
   struct ErrorNorms
   {
     double l2 = 0., l2_exact = 0.;         ///< |u - u_h|_L2 and |u|_L2
@@ -165,6 +173,12 @@ namespace pumpd::global
     std::vector<geometry::Point> evaluate_points() const;
     /// Errors against an exact displacement and its gradient (rows du_x/dx, du_x/dy, du_y/dx, du_y/dy).
     ErrorNorms errors(const SidedField &exact, const std::function<std::array<double, 4>(geometry::Point, int)> &grad) const;
+
+    /// The stress at every vertex of a body without a crack, recovered from the cells around it:
+    /// each cell's stress at its 2 x 2 Gauss points extrapolated to its corners (the bilinear
+    /// interpolant of the four values, in reference coordinates), averaged over the cells that
+    /// share the vertex. Throws std::logic_error when a crack is set (its faces would be averaged).
+    std::vector<NodalStress> nodal_stresses() const;
 
     /// K_I, K_II at every tip by the interaction integral (domain form) over the cells within
     /// radius_factor * tip_radius of the tip.
