@@ -33,7 +33,7 @@
 #include <sstream>
 #include <string>
 
-#include "csv_rows.h"
+#include "csv.h"
 #include "error.h"
 #include "initiation.h"
 #include "metric.h"
@@ -196,7 +196,7 @@ TEST(Initiation, PumpdListsTheSitesAndStops)
   std::cout << out.str() << text << "\n";
   EXPECT_EQ(text.rfind("Initial cracks = none: growing a crack from an initiation site is not built yet", 0), 0u);
   EXPECT_NE(out.str().find("site 1: (0.22, 0), lambda_i = "), std::string::npos);
-  const auto rows = test::read_csv_rows(p.scene.output_directory + "/initiation_sites.csv");
+  const auto rows = read_csv_rows(p.scene.output_directory + "/initiation_sites.csv");
   ASSERT_GE(rows.size(), 1u);
   EXPECT_NEAR(std::stod(rows[0].at("x_m")), 0.22, 1e-9);
   EXPECT_NEAR(std::stod(rows[0].at("y_m")), 0., 1e-9);
