@@ -38,6 +38,12 @@ namespace pumpd::coupling
       double stress, angle;
     };
 
+    bool in_any(geometry::Point x, const std::vector<geometry::Circle> &disks)
+    {
+      return std::any_of(disks.begin(), disks.end(),
+                         [&](const geometry::Circle &c) { return geometry::norm(x - c.centre) < c.radius; });
+    }
+
     Principal principal(const global::NodalStress &s)
     {
       const double mean = 0.5 * (s.xx + s.yy), half = 0.5 * (s.xx - s.yy);
@@ -78,9 +84,7 @@ namespace pumpd::coupling
     for (std::size_t i = 0; i < stress.size(); ++i)
       {
         ratio[i]    = principal(stress[i]).stress / strength;
-        eligible[i] = std::none_of(left_out.begin(), left_out.end(), [&](const geometry::Circle &c) {
-          return geometry::norm(stress[i].at - c.centre) < c.radius;
-        });
+        eligible[i] = !in_any(stress[i].at, left_out);
         if (eligible[i] && (!eligible[top] || ratio[i] > ratio[top]))
           top = i;
       }
@@ -140,14 +144,13 @@ namespace pumpd::coupling
   Initiation find_initiation(const Scene &scene, const GlobalSettings &global, const PeridynamicsSettings &pd,
                              const InitiationSettings &settings)
   {
-    const auto  &m  = scene.material;
-    const double nu = m.plane_strain ? 0.25 : 1. / 3.;
-    if (std::abs(m.poisson_ratio - nu) > 1e-9)
+    const auto                 &m = scene.material;
+    const local::LiptonMaterial material(pd.material(m), pd.horizon);
+    if (std::abs(m.poisson_ratio - material.poisson_ratio()) > 1e-9)
       throw InvalidParameter("Poisson's ratio", to_text(m.poisson_ratio),
                              std::string("a scene without a crack is judged against the strength of bond-based "
                                          "peridynamics, which has nu = ") +
                                (m.plane_strain ? "1/4 in plane strain" : "1/3 in plane stress") + ": set it in Scene/Material");
-    const local::LiptonMaterial material(pd.material(m), pd.horizon);
 
     Initiation result;
     result.strength = local::peak_stress(material, local::StrainPath::uniaxial_stress).stress;
@@ -162,10 +165,7 @@ namespace pumpd::coupling
       }
     const auto left_out = point_disks(scene.conditions, stress, settings.point_clearance * pd.horizon,
                                       settings.point_clearance);
-    if (std::all_of(stress.begin(), stress.end(), [&](const global::NodalStress &s) {
-          return std::any_of(left_out.begin(), left_out.end(),
-                             [&](const geometry::Circle &c) { return geometry::norm(s.at - c.centre) < c.radius; });
-        }))
+    if (std::all_of(stress.begin(), stress.end(), [&](const global::NodalStress &s) { return in_any(s.at, left_out); }))
       throw InvalidParameter("Point clearance", to_text(settings.point_clearance),
                              "leaves no vertex of the mesh outside the disks around the point conditions: lower it");
     result.sites = candidate_sites(stress, result.strength, settings.margin, pd.horizon, left_out);

@@ -71,8 +71,8 @@ namespace pumpd::local
 
     /// The segments of the cracks whose bounding box comes within `reach` of the box: no bond of
     /// the box's lattice can cross the others.
-    std::vector<std::array<geometry::Point, 2>> near_box(const std::vector<geometry::Polyline> &cracks,
-                                                         const geometry::Box &box, double reach)
+    std::vector<std::array<geometry::Point, 2>> crack_segments_near(const std::vector<geometry::Polyline> &cracks,
+                                                                    const geometry::Box &box, double reach)
     {
       std::vector<std::array<geometry::Point, 2>> near;
       for (const auto &c : cracks)
@@ -296,7 +296,7 @@ namespace pumpd::local
     // Bonds: exist between material nodes unless the segment leaves the body (through a hole or
     // across a re-entrant part of the outline).
     const geometry::Body boundary = near_box(reg.body, box, 2. * horizon);
-    const auto           crack_segments = near_box(reg.cracks, box, 2. * horizon);
+    const auto           crack_segments = crack_segments_near(reg.cracks, box, 2. * horizon);
     for (std::size_t k = 0; k < st.size(); ++k)
       {
         const std::ptrdiff_t off = st.dx[k] + std::ptrdiff_t(grid.stride()) * st.dy[k];
