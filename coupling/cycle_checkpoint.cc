@@ -34,18 +34,22 @@ namespace pumpd::coupling
     const std::string partial = path + ".partial";
     const hid_t       file    = H5Fcreate(partial.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
     fail_if(file < 0, "cannot create " + partial);
-    std::vector<double> crack, boxes, refined;
+    std::vector<double> crack, boxes, refined, cycle{double(state.exchanges), state.finished ? 1. : 0.};
     for (const auto &p : state.crack)
       crack.insert(crack.end(), {p.x, p.y});
     for (const auto &r : state.refinements)
       refined.insert(refined.end(), {r.at.x, r.at.y, double(r.levels)});
-    for (const auto &b : state.boxes)
-      boxes.insert(boxes.end(), {b.x_min, b.y_min, b.x_max, b.y_max});
+    for (std::size_t e = 0; e < 2; ++e)
+      {
+        const auto &end = state.ends[e];
+        for (const auto &b : end.boxes)
+          boxes.insert(boxes.end(), {double(e), b.x_min, b.y_min, b.x_max, b.y_max});
+        cycle.insert(cycle.end(), {end.load_factor, double(end.halvings), end.stopped ? 1. : 0.});
+      }
     write_doubles(file, "crack", crack);
     write_doubles(file, "boxes", boxes);
     write_doubles(file, "refinements", refined);
-    write_doubles(file, "cycle",
-                  {double(state.exchanges), state.load_factor, state.finished ? 1. : 0., double(state.halvings)});
+    write_doubles(file, "cycle", cycle);
     H5Fclose(file);
     std::filesystem::rename(partial, path);
   }
@@ -70,18 +74,23 @@ namespace pumpd::coupling
         throw;
       }
     H5Fclose(file);
-    fail_if(crack.size() < 4 || crack.size() % 2 != 0 || boxes.size() % 4 != 0 || refined.size() % 3 != 0 || cycle.size() != 4,
+    fail_if(crack.size() < 4 || crack.size() % 2 != 0 || boxes.size() % 5 != 0 || refined.size() % 3 != 0 ||
+              cycle.size() != 8,
             path + " is not a global-local cycle checkpoint");
     for (std::size_t i = 0; i < crack.size(); i += 2)
       s.crack.push_back({crack[i], crack[i + 1]});
-    for (std::size_t i = 0; i < boxes.size(); i += 4)
-      s.boxes.push_back({boxes[i], boxes[i + 1], boxes[i + 2], boxes[i + 3]});
+    for (std::size_t i = 0; i < boxes.size(); i += 5)
+      s.ends[boxes[i] == 0. ? 0 : 1].boxes.push_back({boxes[i + 1], boxes[i + 2], boxes[i + 3], boxes[i + 4]});
     for (std::size_t i = 0; i < refined.size(); i += 3)
       s.refinements.push_back({{refined[i], refined[i + 1]}, (unsigned int)(refined[i + 2])});
-    s.exchanges   = std::size_t(cycle[0]);
-    s.load_factor = cycle[1];
-    s.finished    = cycle[2] != 0.;
-    s.halvings    = (unsigned int)(cycle[3]);
+    s.exchanges = std::size_t(cycle[0]);
+    s.finished  = cycle[1] != 0.;
+    for (std::size_t e = 0; e < 2; ++e)
+      {
+        s.ends[e].load_factor = cycle[2 + 3 * e];
+        s.ends[e].halvings    = (unsigned int)(cycle[3 + 3 * e]);
+        s.ends[e].stopped     = cycle[4 + 3 * e] != 0.;
+      }
     return s;
   }
 } // namespace pumpd::coupling

@@ -1,10 +1,11 @@
 // The state of the global-local cycle between two exchanges, in HDF5 (checkpoint.h5), so that an
-// interrupted run resumes where it stopped. The PD box is rebuilt at every exchange from the crack
-// polyline, so the crack, the boxes, the accepted load, the counters and the refinements of the
-// global mesh (tip positions and levels: the same mesh on resume) and the last box's horizon are
-// the whole state.
+// interrupted run resumes where it stopped. The PD boxes are rebuilt at every exchange from the
+// crack polyline, so the crack, the counters, the refinements of the global mesh (tip positions
+// and levels: the same mesh on resume) and, per end of the crack, its tip's boxes, accepted load,
+// last box's horizon and whether it stopped are the whole state.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -14,15 +15,22 @@
 
 namespace pumpd::coupling
 {
+  /// What the cycle keeps for the tip at one end of the crack polyline.
+  struct TipEndState
+  {
+    std::vector<geometry::Box> boxes;
+    double                     load_factor = 0.; ///< lambda / lambda_c of its last accepted exchange
+    unsigned int               halvings    = 0;  ///< of its last box's horizon (coupling/resolution.h)
+    bool                       stopped     = false;
+  };
+
   struct CycleState
   {
-    std::size_t                exchanges   = 0;  ///< exchanges accepted so far
-    double                     load_factor = 0.; ///< lambda of the last accepted exchange
-    bool                       finished    = false;
+    std::size_t                exchanges = 0; ///< exchanges done so far
+    bool                       finished  = false;
     geometry::Polyline         crack;
-    std::vector<geometry::Box> boxes;
     std::vector<Refinement>    refinements; ///< of every global solve so far
-    unsigned int               halvings = 0; ///< of the last box's horizon (coupling/resolution.h)
+    std::array<TipEndState, 2> ends;        ///< the tips at the first and the last vertex
   };
 
   /// Throws std::runtime_error if the file cannot be written.

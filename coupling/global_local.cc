@@ -72,6 +72,10 @@ namespace pumpd::coupling
                       "the last accepted load (fewer PD states, but the crack then runs within one relaxation and "
                       "turns less).",
                       Patterns::Bool());
+    prm.add_parameter("Box threshold", box_threshold,
+                      "A tip gets a PD box when its G / G_c is at least this at the load where the first tip reaches "
+                      "G = G_c (G grows with the load squared); a tip below it waits, modelled by the enrichment alone.",
+                      Patterns::Double(1e-3, 1.));
     prm.add_parameter("Maximum exchanges", max_exchanges, "Global-local exchanges at most.", Patterns::Integer(1));
     prm.add_parameter("Reference box area", reference_box_area,
                       "Area of the fixed PD box the moving box is compared with [m^2] (a metric); default: Ni et al. "
@@ -90,39 +94,27 @@ namespace pumpd::coupling
   {
     double seconds_since(Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); }
 
-    /// The scene's crack, which must have one tip: the cycle grows one.
-    global::Crack one_tip_crack(const Scene &scene)
-    {
-      const auto   &vertices = scene.crack();
-      const auto   &box      = scene.body.bounding_box();
-      global::Crack crack(vertices, scene.body, 1e-8 * std::max(box.width(), box.height()));
-      if (crack.tips().size() != 1)
-        throw InvalidParameter("Initial cracks", to_text(vertices),
-                               "the global-local cycle grows one tip: give an edge crack (one end on the outline or "
-                               "a hole's rim)");
-      return crack;
-    }
-
     const char *load_steps_header =
       "exchange,lambda,load_factor,critical_load_factor,load,displacement,tip_x_m,tip_y_m,crack_length_m,K_I_Pa_sqrt_m,"
       "K_II_Pa_sqrt_m,advance_m,decision,pd_nodes,pd_substeps,pd_repeats,pd_iterations,dofs,seconds_global,"
-      "seconds_point_evaluation,seconds_pd,seconds_extraction,horizon_m";
+      "seconds_point_evaluation,seconds_pd,seconds_extraction,horizon_m,tip_end,kink_deg,predicted_kink_deg";
 
     void write_row(CsvFile &table, const ExchangeRecord &r)
     {
       table.row(r.exchange, r.lambda, r.load_factor, r.critical_load_factor, r.load, r.displacement, r.tip.x, r.tip.y,
                 r.crack_length, r.k1, r.k2, r.advance, r.decision, r.pd_nodes, r.substeps, r.repeats, r.pd_iterations,
-                r.dofs, r.seconds_global, r.seconds_point_evaluation, r.seconds_pd, r.seconds_extraction, r.horizon);
+                r.dofs, r.seconds_global, r.seconds_point_evaluation, r.seconds_pd, r.seconds_extraction, r.horizon,
+                r.tip_end, r.kink * 180. / M_PI, r.predicted_kink * 180. / M_PI);
     }
 
-    void write_boxes(CsvFile table, const std::vector<geometry::Box> &boxes)
+    void write_boxes(CsvFile &table, const std::vector<geometry::Box> &boxes, std::size_t tip_end)
     {
       for (std::size_t k = 0; k < boxes.size(); ++k)
         {
           const auto &b     = boxes[k];
           const bool  moved = k == 0 || b.x_min != boxes[k - 1].x_min || b.y_min != boxes[k - 1].y_min ||
                              b.x_max != boxes[k - 1].x_max || b.y_max != boxes[k - 1].y_max;
-          table.row(k, b.x_min, b.y_min, b.x_max, b.y_max, moved);
+          table.row(k, b.x_min, b.y_min, b.x_max, b.y_max, moved, tip_end);
         }
     }
 
@@ -165,71 +157,9 @@ namespace pumpd::coupling
 
   namespace
   {
-    /// One run of the cycle: its parts (global problem, box policy, controller, recorder) and
-    /// the steps of an exchange, each a member function; run() is the loop over them.
-    class Cycle
-    {
-    public:
-      Cycle(const Scene &scene, const GlobalLocalSettings &settings, std::ostream &out);
-      GlobalLocalResult run();
-
-    private:
-      /// "" or why no exchange may start: the exchange or crack length limit.
-      std::string limit_reached(std::size_t n) const;
-      /// The global problem: the tip's K and critical load factor; "" or why the run stops.
-      std::string solve_global(ExchangeRecord &record, TipState &tip);
-      /// The horizon of this exchange's box (resolution.h), chosen by the path ahead of the tip:
-      /// the PD settings, the box, the advance and the global refinement at the tip follow it.
-      void resolve(ExchangeRecord &record);
-      /// The box around the tip and the PD body in it (the crack behind the tip as broken bonds).
-      local::PdModel pd_body(const TipState &tip, ExchangeRecord &record);
-      /// The mapping of the global displacement onto the body's nodes.
-      BoundaryTransfer transfer_to(const local::PdModel &model, ExchangeRecord &record);
-      /// The PD states along the load until the crack grows (exchange.h).
-      ExchangeOutcome exchange(const local::PdModel &model, const BoundaryTransfer &transfer, const TipState &tip,
-                               ExchangeRecord &record);
-      /// The accepted increment into the crack; "" or why the run stops (a hole, the outline, ...).
-      std::string grow(const ExchangeOutcome &outcome, ExchangeRecord &record);
-      /// True if the ligament ahead of the tip (to the outline or a hole, along its direction) is
-      /// narrower than Clearance over horizon of the finest box: no PD box resolves it.
-      bool ligament_unresolved(const TipState &tip) const;
-      /// One LEFM increment of a box horizon along the maximum hoop stress direction at lambda_c
-      /// (as lefm_growth.h), to the outline or the hole where the ligament ends.
-      std::string grow_by_lefm(const TipState &tip, ExchangeRecord &record);
-      /// The files for people and the checkpoint; the progress line. `model` and `outcome` are
-      /// those of the PD exchange, none for an LEFM increment.
-      void write(const ExchangeRecord &record, const local::PdModel *model, const ExchangeOutcome *outcome,
-                 const std::string &stop);
-      /// The result: path, boxes, distances from the reference path; the summary metrics.
-      GlobalLocalResult finish();
-
-      /// The box's lengths over the section's: 2^-halvings.
-      double length_scale() const { return std::ldexp(1., -int(halvings)); }
-      /// Where a grown path ends: a hole within its margin, or the outline or a hole within a horizon.
-      Arrival arrival_of(const geometry::Polyline &path) const
-      {
-        return arrive(path, scene.body, s.growth.hole_margin, pd.horizon, 0, pd.horizon);
-      }
-
-      const Scene                    &scene;
-      const GlobalLocalSettings      &s;
-      std::ostream                   &out;
-      const double                    h, max_length;
-      const local::MaterialParameters material;
-      PeridynamicsSettings            pd;                 ///< of this exchange's box
-      unsigned int                    halvings     = 0;   ///< its horizon: the section's / 2^halvings
-      std::optional<global::Crack>    crack;
-      GlobalProblem                   global;
-      BoxPolicy                       boxes;
-      ExchangeController              controller;
-      Recorder                        recorder;
-      std::string                     checkpoint;
-      CycleState                      state;
-      CsvFile                         steps;
-      GlobalLocalResult               result;
-      double                          box_area_sum = 0., length0 = 0.;
-      Clock::time_point               t0 = Clock::now();
-    };
+    /// The end of the crack polyline a tip sits at (0: its first vertex, 1: its last): a tip keeps
+    /// it while the crack grows and when the other tip stops.
+    std::size_t end_of(const global::Tip &tip) { return tip.vertex == 0 ? 0 : 1; }
 
     BoxSettings box_settings(const GlobalLocalSettings &s)
     {
@@ -239,6 +169,115 @@ namespace pumpd::coupling
       return b;
     }
 
+    /// What the cycle keeps for one end of the crack: the box that follows its tip, the
+    /// controller of its exchanges, its box's horizon, and whether the tip has stopped.
+    struct TipTrack
+    {
+      TipTrack(const Scene &scene, const GlobalLocalSettings &s)
+        : boxes(scene.body, box_settings(s))
+        , controller(s.cycle.exchange)
+        , pd(s.pd)
+      {}
+
+      /// The box's lengths over the section's: 2^-halvings.
+      double length_scale() const { return std::ldexp(1., -int(halvings)); }
+
+      BoxPolicy            boxes;
+      ExchangeController   controller;
+      PeridynamicsSettings pd;           ///< of this tip's box
+      unsigned int         halvings = 0; ///< its horizon: the section's / 2^halvings
+      bool                 stopped  = false;
+    };
+
+    /// One tip's part of an exchange: its state under the global solve, the PD body and the
+    /// outcome of its states (none for an LEFM increment through an unresolved ligament).
+    struct TipExchange
+    {
+      std::size_t                   end = 1;
+      TipState                      tip;
+      ExchangeRecord                record;
+      std::optional<local::PdModel> model;
+      ExchangeOutcome               outcome;
+      bool                          grows = false; ///< its increment goes into the crack at this exchange's load
+    };
+
+    /// One run of the cycle: its parts (global problem, a box and a controller per tip, recorder)
+    /// and the steps of an exchange, each a member function; run() is the loop over them.
+    class Cycle
+    {
+    public:
+      Cycle(const Scene &scene, const GlobalLocalSettings &settings, std::ostream &out);
+      GlobalLocalResult run();
+
+    private:
+      /// "" or why no exchange may start: the exchange or crack length limit.
+      std::string limit_reached(std::size_t n) const;
+      /// The global problem: every tip's K and critical load factor, and the tips that get a box
+      /// (the box threshold); "" or why the run stops.
+      std::string solve_global(std::size_t n, std::vector<TipExchange> &parts);
+      /// The horizon of this tip's box (resolution.h), chosen by the path ahead of it: the PD
+      /// settings, the box and the advance follow it.
+      void resolve(TipExchange &part);
+      /// The box around the tip and the PD body in it (the whole crack as broken bonds).
+      void pd_body(TipExchange &part);
+      /// The mapping of the global displacement onto the body's nodes.
+      BoundaryTransfer transfer_to(TipExchange &part);
+      /// The PD states along the load until the crack grows at this tip (exchange.h).
+      void exchange(const BoundaryTransfer &transfer, TipExchange &part);
+      /// The load of the exchange and the tips that grow at it (README, "Several tips"); the
+      /// accepted increments into the crack; "" or why the run stops (branching, no growth, every
+      /// tip stopped at a hole or the outline).
+      std::string grow(std::vector<TipExchange> &parts);
+      /// The increment of one tip into the crack, cut where it arrives; "" or why the tip stops.
+      std::string grow_tip(std::size_t end, const geometry::Polyline &path);
+      /// True if the ligament ahead of the tip (to the outline or a hole, along its direction) is
+      /// narrower than Clearance over horizon of the finest box: no PD box resolves it.
+      bool ligament_unresolved(const TipState &tip) const;
+      /// One LEFM increment of a box horizon along the maximum hoop stress direction at lambda_c
+      /// (as lefm_growth.h), to the outline or the hole where the ligament ends.
+      void grow_by_lefm(TipExchange &part);
+      /// The files for people and the checkpoint; a progress line per tip.
+      void write(std::size_t n, const std::vector<TipExchange> &parts, const std::string &stop);
+      /// The result: path, boxes, distances from the reference path; the summary metrics.
+      GlobalLocalResult finish();
+
+      /// Where a grown path ends: a hole within its margin, or the outline or a hole within a horizon.
+      Arrival arrival_of(const geometry::Polyline &path, double horizon) const
+      {
+        return arrive(path, scene.body, s.growth.hole_margin, horizon, 0, horizon);
+      }
+      /// The index in crack->tips() of the tip at this end.
+      std::size_t tip_index(std::size_t end) const;
+      geometry::Point end_vertex(std::size_t end) const
+      {
+        return end == 0 ? crack->vertices().front() : crack->vertices().back();
+      }
+
+      const Scene                    &scene;
+      const GlobalLocalSettings      &s;
+      std::ostream                   &out;
+      const double                    h, max_length;
+      const local::MaterialParameters material;
+      std::optional<global::Crack>    crack;
+      GlobalProblem                   global;
+      std::vector<TipTrack>           tracks; ///< per end of the crack
+      Recorder                        recorder;
+      std::string                     checkpoint;
+      CycleState                      state;
+      CsvFile                         steps;
+      GlobalLocalResult               result;
+      double                          box_area_sum = 0., length0 = 0.;
+      std::size_t                     boxes_placed = 0;
+      Clock::time_point               t0 = Clock::now();
+    };
+
+    /// The scene's crack (one polyline; an edge crack has one tip, an interior crack two).
+    global::Crack the_crack(const Scene &scene)
+    {
+      const auto &box = scene.body.bounding_box();
+      return global::Crack(scene.crack(), scene.body, 1e-8 * std::max(box.width(), box.height()));
+    }
+
     Cycle::Cycle(const Scene &sc, const GlobalLocalSettings &settings, std::ostream &progress)
       : scene(sc)
       , s(settings)
@@ -246,11 +285,9 @@ namespace pumpd::coupling
       , h(settings.pd.spacing())
       , max_length(settings.growth.length_limit())
       , material(settings.pd.material(sc.material))
-      , pd(settings.pd)
-      , crack(one_tip_crack(sc))
+      , crack(the_crack(sc))
       , global(sc, settings.global)
-      , boxes(sc.body, box_settings(settings))
-      , controller(settings.cycle.exchange)
+      , tracks(2, TipTrack(sc, settings))
       , recorder(sc, settings.cycle.resume)
       , checkpoint(recorder.writes() ? recorder.path("checkpoint.h5") : "")
     {
@@ -265,49 +302,50 @@ namespace pumpd::coupling
           state = read_cycle_checkpoint(checkpoint);
           crack.emplace(state.crack, scene.body, 1e-8 * std::max(scene.body.bounding_box().width(), scene.body.bounding_box().height()));
           global.restore(state.refinements);
-          boxes.restore(state.boxes, std::ldexp(1., -int(state.halvings)));
-          controller.restore(state.load_factor);
+          for (std::size_t e = 0; e < 2; ++e)
+            {
+              const auto &saved = state.ends[e];
+              tracks[e].halvings = saved.halvings;
+              tracks[e].stopped  = saved.stopped;
+              tracks[e].boxes.restore(saved.boxes, tracks[e].length_scale());
+              tracks[e].controller.restore(saved.load_factor);
+            }
           out << "resuming after exchange " << state.exchanges << ": crack " << crack->length() << " m\n";
         }
       steps   = recorder.table("load_steps.csv", load_steps_header);
       length0 = crack->length();
       out << "global-local: " << scene.mesh_file << ", " << scene.body.holes().size() << " holes, initial crack "
-          << crack->length() << " m; PD delta " << s.pd.horizon << " m, m = " << s.pd.horizon_over_spacing << ", box "
-          << s.cycle.box.size << " m; K_c = " << scene.material.critical_sif() << " Pa m^1/2\n";
+          << crack->length() << " m with " << crack->tips().size() << (crack->tips().size() == 1 ? " tip" : " tips")
+          << "; PD delta " << s.pd.horizon << " m, m = " << s.pd.horizon_over_spacing << ", box " << s.cycle.box.size
+          << " m; K_c = " << scene.material.critical_sif() << " Pa m^1/2\n";
     }
 
     GlobalLocalResult Cycle::run()
     {
       for (std::size_t n = state.exchanges; !state.finished; ++n)
         {
-          ExchangeRecord record;
-          record.exchange     = n;
-          record.crack_length = crack->length();
-          TipState    tip;
-          std::string stop = limit_reached(n);
+          std::vector<TipExchange> parts;
+          std::string              stop = limit_reached(n);
           if (stop.empty())
-            {
-              resolve(record);
-              stop = solve_global(record, tip);
-            }
+            stop = solve_global(n, parts);
           if (!stop.empty())
             {
               result.stop_reason = stop;
               break;
             }
-          if (ligament_unresolved(tip))
+          for (auto &part : parts)
             {
-              stop = grow_by_lefm(tip, record);
-              write(record, nullptr, nullptr, stop);
+              resolve(part);
+              if (ligament_unresolved(part.tip))
+                grow_by_lefm(part);
+              else
+                {
+                  pd_body(part);
+                  exchange(transfer_to(part), part);
+                }
             }
-          else
-            {
-              const local::PdModel   model    = pd_body(tip, record);
-              const BoundaryTransfer transfer = transfer_to(model, record);
-              const ExchangeOutcome  outcome  = exchange(model, transfer, tip, record);
-              stop                            = grow(outcome, record);
-              write(record, &model, &outcome, stop);
-            }
+          stop = grow(parts);
+          write(n, parts, stop);
           if (!stop.empty())
             {
               result.stop_reason = stop;
@@ -332,11 +370,12 @@ namespace pumpd::coupling
       if (result.stop_reason.empty() && state.finished) // resumed from the checkpoint of a run that had stopped
         result.stop_reason = "nothing to resume: the checkpointed run had already stopped after exchange " +
                              std::to_string(state.exchanges) + " (its reason: the last row of load_steps.csv)";
-      result.path    = crack->vertices();
-      result.boxes   = boxes.history();
+      result.path = crack->vertices();
+      for (const auto &track : tracks)
+        result.boxes.insert(result.boxes.end(), track.boxes.history().begin(), track.boxes.history().end());
       result.seconds = seconds_since(t0);
-      if (!result.exchanges.empty())
-        result.mean_box_area = box_area_sum / double(result.exchanges.size());
+      if (boxes_placed > 0)
+        result.mean_box_area = box_area_sum / double(boxes_placed);
       if (!scene.reference_path.empty())
         {
           const auto d               = published_distance(result.path, scene.reference_path, 0.1 * h);
@@ -347,59 +386,97 @@ namespace pumpd::coupling
       return result;
     }
 
-    std::string Cycle::solve_global(ExchangeRecord &record, TipState &tip)
+    std::size_t Cycle::tip_index(std::size_t end) const
     {
-      const auto t                = Clock::now();
-      tip                         = global.solve(*crack).front();
-      record.tip                  = tip.position;
-      record.critical_load_factor = tip.critical_load_factor;
-      record.dofs                 = global.n_dofs();
-      record.enriched_dofs        = global.n_enriched_dofs();
-      record.seconds_global       = seconds_since(t);
-      return tip.k1 > 0. ? "" : "the crack closes under the load (K_I <= 0)";
+      const auto &tips = crack->tips();
+      for (std::size_t t = 0; t < tips.size(); ++t)
+        if (end_of(tips[t]) == end)
+          return t;
+      throw std::logic_error("no tip at this end of the crack");
     }
 
-    void Cycle::resolve(ExchangeRecord &record)
+    std::string Cycle::solve_global(std::size_t n, std::vector<TipExchange> &parts)
     {
-      const auto  &tip       = crack->tips().front();
+      const auto   t      = Clock::now();
+      const auto   states = global.solve(*crack);
+      const double solved = seconds_since(t);
+      double       first  = std::numeric_limits<double>::infinity();
+      for (std::size_t k = 0; k < states.size(); ++k)
+        if (!tracks[end_of(crack->tips()[k])].stopped)
+          first = std::min(first, states[k].critical_load_factor);
+      if (!std::isfinite(first))
+        return "the crack closes under the load (K_I <= 0)";
+      // G scales with lambda^2: at lambda = first a tip has G / G_c = (first / lambda_c)^2.
+      for (std::size_t k = 0; k < states.size(); ++k)
+        {
+          const std::size_t end = end_of(crack->tips()[k]);
+          const double      g   = std::pow(first / states[k].critical_load_factor, 2);
+          if (tracks[end].stopped || g < s.cycle.box_threshold)
+            continue;
+          TipExchange part;
+          part.end                           = end;
+          part.tip                           = states[k];
+          part.record.exchange               = n;
+          part.record.tip_end                = end;
+          part.record.crack_length           = crack->length();
+          part.record.tip                    = part.tip.position;
+          part.record.critical_load_factor   = part.tip.critical_load_factor;
+          part.record.dofs                   = global.n_dofs();
+          part.record.enriched_dofs          = global.n_enriched_dofs();
+          part.record.seconds_global         = solved / double(states.size());
+          part.record.predicted_kink         = kink_angle(part.tip.k1, part.tip.k2);
+          parts.push_back(std::move(part));
+        }
+      return "";
+    }
+
+    void Cycle::resolve(TipExchange &part)
+    {
+      auto        &track     = tracks[part.end];
       const double reach     = s.cycle.exchange.max_advance + s.pd.horizon;
-      const double clearance = std::min(clearance_ahead(scene.body, tip.position, tip.direction, reach, 0.5 * h),
-                                        boxes.smallest_hole_within_reach(tip.position, tip.direction));
-      halvings               = horizon_halvings(s.cycle.resolution, s.pd.horizon, clearance);
-      pd.horizon             = length_scale() * s.pd.horizon;
-      record.horizon         = pd.horizon;
+      const double clearance = std::min(clearance_ahead(scene.body, part.tip.position, part.tip.direction, reach, 0.5 * h),
+                                        track.boxes.smallest_hole_within_reach(part.tip.position, part.tip.direction));
+      track.halvings         = horizon_halvings(s.cycle.resolution, s.pd.horizon, clearance);
+      track.pd.horizon       = track.length_scale() * s.pd.horizon;
+      part.record.horizon    = track.pd.horizon;
     }
 
-    local::PdModel Cycle::pd_body(const TipState &tip, ExchangeRecord &record)
+    void Cycle::pd_body(TipExchange &part)
     {
-      const auto t = Clock::now();
-      record.box   = boxes.place(tip.position, tip.direction, length_scale());
-      local::PdModel model(material, pd.horizon, pd.horizon_over_spacing,
-                           local::Region{scene.body, record.box, {crack->vertices()}});
-      record.pd_nodes                 = model.nodes().size();
-      record.seconds_point_evaluation = seconds_since(t);
-      box_area_sum += record.box.width() * record.box.height();
-      return model;
+      const auto t      = Clock::now();
+      auto      &track  = tracks[part.end];
+      part.record.box   = track.boxes.place(part.tip.position, part.tip.direction, track.length_scale());
+      part.model.emplace(material, track.pd.horizon, track.pd.horizon_over_spacing,
+                         local::Region{scene.body, part.record.box, {crack->vertices()}});
+      part.record.pd_nodes                 = part.model->nodes().size();
+      part.record.seconds_point_evaluation = seconds_since(t);
+      box_area_sum += part.record.box.width() * part.record.box.height();
+      ++boxes_placed;
     }
 
-    BoundaryTransfer Cycle::transfer_to(const local::PdModel &model, ExchangeRecord &record)
+    BoundaryTransfer Cycle::transfer_to(TipExchange &part)
     {
       const auto       t = Clock::now();
-      BoundaryTransfer transfer(global, model);
-      record.seconds_point_evaluation += seconds_since(t);
+      BoundaryTransfer transfer(global, *part.model);
+      part.record.seconds_point_evaluation += seconds_since(t);
       return transfer;
     }
 
-    ExchangeOutcome Cycle::exchange(const local::PdModel &model, const BoundaryTransfer &transfer, const TipState &tip,
-                                    ExchangeRecord &record)
+    void Cycle::exchange(const BoundaryTransfer &transfer, TipExchange &part)
     {
+      auto        &track  = tracks[part.end];
+      auto        &record = part.record;
+      const auto  &tip    = part.tip;
+      const double scale  = track.length_scale();
       const double allowed =
-        std::min(length_scale() * controller.allowed_advance(scene.body.clearance(tip.position) / length_scale()),
+        std::min(scale * track.controller.allowed_advance(scene.body.clearance(tip.position) / scale),
                  max_length - record.crack_length);
-      auto outcome = run_exchange(model, transfer, controller, tip, allowed,
-                                  [&](const geometry::Polyline &path) { return !arrival_of(path).reason.empty(); },
-                                  pd, out);
-      outcome.increment.path = truncate(outcome.increment.path, allowed);
+      auto &outcome = part.outcome;
+      outcome       = run_exchange(
+        *part.model, transfer, track.controller, tip, allowed,
+        [&](const geometry::Polyline &path) { return !arrival_of(path, track.pd.horizon).reason.empty(); }, track.pd,
+        out);
+      outcome.increment.path    = truncate(outcome.increment.path, allowed);
       record.pd_iterations      = outcome.iterations;
       record.substeps           = outcome.states;
       record.repeats            = outcome.repeats;
@@ -411,27 +488,78 @@ namespace pumpd::coupling
       record.k1          = tip.k1 * record.lambda;
       record.k2          = tip.k2 * record.lambda;
       record.decision    = outcome.branching.empty() ? to_text(outcome.decision) : "branching";
-      global.scale_to(record.lambda);
-      std::tie(record.load, record.displacement) = global.report();
-      return outcome;
     }
 
-    std::string Cycle::grow(const ExchangeOutcome &outcome, ExchangeRecord &record)
+    std::string Cycle::grow(std::vector<TipExchange> &parts)
     {
-      if (!outcome.branching.empty())
-        return "crack branching in the PD box, refused: " + outcome.branching;
-      if (outcome.decision == Decision::too_small)
+      for (const auto &part : parts)
+        if (!part.outcome.branching.empty())
+          return "crack branching in the PD box, refused: " + part.outcome.branching;
+      const auto grew = [](const TipExchange &part) {
+        return part.outcome.decision == Decision::accept || part.outcome.decision == Decision::truncate;
+      };
+      for (auto &part : parts)
+        {
+          global.scale_to(part.record.lambda);
+          std::tie(part.record.load, part.record.displacement) = global.report();
+        }
+      // The exchange's load: the lowest at which a tip grew. A tip that grew within one load
+      // increment of its own ladder above it grows too: its states cannot tell the two loads apart.
+      double lambda = std::numeric_limits<double>::infinity();
+      for (const auto &part : parts)
+        if (grew(part))
+          lambda = std::min(lambda, part.record.lambda);
+      if (!std::isfinite(lambda))
         {
           std::ostringstream reason;
           reason << "the load is too small to grow the crack: no growth up to " << s.cycle.exchange.max_load_factor
                  << " lambda_c";
           return reason.str();
         }
-      const auto arrival = arrival_of(outcome.increment.path);
+      std::vector<std::string> reasons(2);
+      for (auto &part : parts)
+        {
+          part.grows = grew(part) && part.record.lambda <=
+                                       lambda + s.cycle.exchange.load_increment * part.tip.critical_load_factor;
+          if (!part.grows)
+            {
+              part.record.decision = "waits";
+              continue;
+            }
+          const double before = crack->length();
+          const auto  &path   = part.outcome.increment.path;
+          const auto   reason = grow_tip(part.end, path);
+          part.record.advance = crack->length() - before;
+          if (path.size() > 1)
+            part.record.kink = std::atan2(geometry::cross(part.tip.direction, path[1] - path[0]),
+                                          geometry::dot(part.tip.direction, path[1] - path[0]));
+          if (!reason.empty())
+            {
+              tracks[part.end].stopped = true;
+              reasons[part.end] =
+                part.model ? reason :
+                             reason + " (the last ligament, narrower than " +
+                               pumpd::to_text(s.cycle.resolution.clearance_over_horizon, 3) +
+                               " horizons of the finest PD box, grown by LEFM: maximum hoop stress at G = G_c)";
+            }
+        }
+      global.scale_to(lambda);
+      for (const auto &tip : crack->tips())
+        if (!tracks[end_of(tip)].stopped)
+          return "";
+      std::string stop;
+      for (const auto &reason : reasons)
+        if (!reason.empty())
+          stop += (stop.empty() ? "" : "; ") + reason;
+      return stop;
+    }
+
+    std::string Cycle::grow_tip(std::size_t end, const geometry::Polyline &path)
+    {
+      const auto arrival = arrival_of(path, tracks[end].pd.horizon);
       for (std::size_t k = 1; k < arrival.path.size(); ++k)
-        if (geometry::norm(arrival.path[k] - crack->vertices().back()) > 1e-3 * h)
-          crack->grow(0, arrival.path[k]);
-      record.advance = crack->length() - record.crack_length;
+        if (geometry::norm(arrival.path[k] - end_vertex(end)) > 1e-3 * h)
+          crack->grow(tip_index(end), arrival.path[k]);
       return arrival.reason;
     }
 
@@ -444,82 +572,91 @@ namespace pumpd::coupling
       return ligament < r.clearance_over_horizon * finest;
     }
 
-    std::string Cycle::grow_by_lefm(const TipState &tip, ExchangeRecord &record)
+    void Cycle::grow_by_lefm(TipExchange &part)
     {
-      const double angle   = kink_angle(tip.k1, tip.k2);
+      const auto  &tip   = part.tip;
+      const double angle = kink_angle(tip.k1, tip.k2);
       const Point  n{-tip.direction.y, tip.direction.x};
-      const Point  e       = std::cos(angle) * tip.direction + std::sin(angle) * n;
-      const auto   arrival = arrival_of({tip.position, tip.position + pd.horizon * e});
-      for (std::size_t k = 1; k < arrival.path.size(); ++k)
-        if (geometry::norm(arrival.path[k] - crack->vertices().back()) > 1e-3 * h)
-          crack->grow(0, arrival.path[k]);
-      record.decision    = "lefm";
-      record.load_factor = 1.;
-      record.lambda      = tip.critical_load_factor;
-      record.k1          = tip.k1 * record.lambda;
-      record.k2          = tip.k2 * record.lambda;
-      record.advance     = crack->length() - record.crack_length;
-      global.scale_to(record.lambda);
-      std::tie(record.load, record.displacement) = global.report();
-      if (arrival.reason.empty())
-        return "";
-      return arrival.reason + " (the last ligament, narrower than " +
-             pumpd::to_text(s.cycle.resolution.clearance_over_horizon, 3) +
-             " horizons of the finest PD box, grown by LEFM: maximum hoop stress at G = G_c)";
+      const Point  e = std::cos(angle) * tip.direction + std::sin(angle) * n;
+      part.outcome.increment.path = {tip.position, tip.position + tracks[part.end].pd.horizon * e};
+      part.outcome.decision       = Decision::accept;
+      auto &record                = part.record;
+      record.decision             = "lefm";
+      record.load_factor          = 1.;
+      record.lambda               = tip.critical_load_factor;
+      record.k1                   = tip.k1 * record.lambda;
+      record.k2                   = tip.k2 * record.lambda;
     }
 
-    void Cycle::write(const ExchangeRecord &record, const local::PdModel *model, const ExchangeOutcome *outcome,
-                      const std::string &stop)
+    void Cycle::write(std::size_t n, const std::vector<TipExchange> &parts, const std::string &stop)
     {
-      const std::size_t n    = record.exchange;
-      const bool        last = !stop.empty() || n + 1 >= s.cycle.max_exchanges || crack->length() >= max_length - 1e-9;
-      result.exchanges.push_back(record);
-      write_row(steps, record);
-      const bool accepted = !outcome || (outcome->branching.empty() && (outcome->decision == Decision::accept ||
-                                                                        outcome->decision == Decision::truncate));
-      if (accepted)
-        recorder.load_displacement(n, record.lambda, record.load, record.displacement, crack->length(),
-                                   crack->vertices().back());
+      const bool last = !stop.empty() || n + 1 >= s.cycle.max_exchanges || crack->length() >= max_length - 1e-9;
+      for (const auto &part : parts)
+        {
+          result.exchanges.push_back(part.record);
+          write_row(steps, part.record);
+        }
+      for (const auto &part : parts)
+        if (part.grows)
+          {
+            recorder.load_displacement(n, part.record.lambda, part.record.load, part.record.displacement,
+                                       crack->length(), crack->vertices().back());
+            break;
+          }
       if (n % s.cycle.output_interval == 0 || last)
         {
           recorder.global_state(global, double(n));
-          if (model)
-            recorder.pd_state(*model, outcome->state);
+          for (const auto &part : parts)
+            if (part.model)
+              recorder.pd_state(*part.model, part.outcome.state);
         }
       recorder.crack_path(crack->vertices());
       if (recorder.writes())
         {
-          write_boxes(CsvFile(recorder.path("boxes.csv"), "exchange,x_min_m,y_min_m,x_max_m,y_max_m,moved"), boxes.history());
-          state.exchanges   = n + 1;
-          state.load_factor = controller.load_factor();
-          state.finished    = !stop.empty();
-          state.crack       = crack->vertices();
-          state.boxes       = boxes.history();
+          CsvFile boxes_table(recorder.path("boxes.csv"), "exchange,x_min_m,y_min_m,x_max_m,y_max_m,moved,tip_end");
+          state.exchanges = n + 1;
+          state.finished  = !stop.empty();
+          state.crack     = crack->vertices();
+          for (std::size_t e = 0; e < 2; ++e)
+            {
+              write_boxes(boxes_table, tracks[e].boxes.history(), e);
+              state.ends[e] = {tracks[e].boxes.history(), tracks[e].controller.load_factor(), tracks[e].halvings,
+                               tracks[e].stopped};
+            }
           state.refinements = global.refinements();
-          state.halvings    = halvings;
           write_cycle_checkpoint(checkpoint, state);
         }
 
       // ETA: the growth rate so far against what is left to grow (to the length limit, or to the
-      // boundary ahead of the tip).
+      // boundary ahead of the tip that has farthest to go).
       const double grown = crack->length() - length0;
-      const double ahead = std::min(max_length - crack->length(),
-                                    crack->tips().empty() ? 0. : scene.body.ray_to_outline(crack->tips()[0].position,
-                                                                                           crack->tips()[0].direction));
+      double       ahead = 0.;
+      for (const auto &tip : crack->tips())
+        if (!tracks[end_of(tip)].stopped)
+          ahead = std::max(ahead, scene.body.ray_to_outline(tip.position, tip.direction));
+      ahead            = std::min(max_length - crack->length(), ahead);
       const double eta = grown > 0. ? seconds_since(t0) / grown * ahead : 0.;
-      const auto  &box = record.box;
-      out << "exchange " << std::setw(3) << n << "  lambda " << std::setprecision(4) << record.lambda << " ("
-          << record.load_factor << " lambda_c)  crack " << crack->length() << " m  +" << 1e3 * record.advance
-          << " mm  tip " << to_text(crack->vertices().back()) << "  ";
-      if (model)
-        out << "box [" << box.x_min << ", " << box.x_max << "] x [" << box.y_min << ", " << box.y_max << "]"
-            << (boxes.moved() ? " new" : "") << "  delta " << 1e3 * record.horizon << " mm, " << record.pd_nodes
-            << " PD nodes, " << record.substeps << " states, " << record.pd_iterations << " DR its";
-      else
-        out << "LEFM increment (ligament below " << s.cycle.resolution.clearance_over_horizon
-            << " horizons of the finest box)";
-      out << "  ETA <= " << std::fixed << std::setprecision(0) << eta << " s" << std::defaultfloat
-          << std::setprecision(6) << std::endl;
+      for (const auto &part : parts)
+        {
+          const auto &record = part.record;
+          const auto &box    = record.box;
+          out << "exchange " << std::setw(3) << n << (parts.size() > 1 ? (part.end == 0 ? " tip 0" : " tip 1") : "")
+              << "  lambda " << std::setprecision(4) << record.lambda << " (" << record.load_factor
+              << " lambda_c)  crack " << crack->length() << " m  +" << 1e3 * record.advance << " mm  tip "
+              << to_text(end_vertex(part.end)) << "  ";
+          if (part.model)
+            out << "box [" << box.x_min << ", " << box.x_max << "] x [" << box.y_min << ", " << box.y_max << "]"
+                << (tracks[part.end].boxes.moved() ? " new" : "") << "  delta " << 1e3 * record.horizon << " mm, "
+                << record.pd_nodes << " PD nodes, " << record.substeps << " states, " << record.pd_iterations
+                << " DR its";
+          else
+            out << "LEFM increment (ligament below " << s.cycle.resolution.clearance_over_horizon
+                << " horizons of the finest box)";
+          if (!part.grows && part.outcome.decision != Decision::too_small)
+            out << "  waits: grew above this exchange's load";
+          out << "  ETA <= " << std::fixed << std::setprecision(0) << eta << " s" << std::defaultfloat
+              << std::setprecision(6) << std::endl;
+        }
     }
   } // namespace
 

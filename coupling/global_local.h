@@ -11,10 +11,16 @@
 //  3. the exchange (exchange.h): quasi-static PD states along lambda, the ExchangeController
 //     raising, repeating or accepting as the extracted advance dictates;
 //  4. the increment grows the crack; a tip that reaches a hole (within the hole margin) or the
-//     outline stops there, and the run ends. A ligament ahead narrower than 3 horizons of the
-//     finest box is resolved by no box: the tip grows through it by LEFM instead of 2-3;
+//     outline stops there, and the run ends when no tip is left. A ligament ahead narrower than 3
+//     horizons of the finest box is resolved by no box: the tip grows through it by LEFM instead
+//     of 2-3;
 //  5. the recorder writes what people look at, and the checkpoint.
-// The growth needs one crack with one tip (several come in a later version).
+// The crack is one polyline with one tip (an edge crack) or two (an interior crack). Each tip has
+// its own box, controller and horizon; steps 2-3 run per tip. A tip gets a box when its G / G_c
+// is at least `Box threshold` at the load where the first tip reaches G = G_c; the others wait.
+// The exchange's load is the lowest at which a tip grew; a tip that grew within one load
+// increment of its own ladder above it grows too (its states cannot tell the two loads apart),
+// the increment of any other is discarded and computed again at the next exchange.
 #pragma once
 
 #include <cstddef>
@@ -43,6 +49,7 @@ namespace pumpd::coupling
     BoxSettings        box; ///< its horizon and spacing come from the section Peridynamics
     ExchangeSettings   exchange;
     ResolutionSettings resolution; ///< the box's horizon: the section's, or halved near holes and edges
+    double           box_threshold      = 0.5; ///< G / G_c a tip needs for a box when the first reaches G_c
     unsigned int     max_exchanges      = 200;
     double           reference_box_area = 0.02258; ///< the fixed box of Ni et al. 2019 [m^2], for a metric
     unsigned int     output_interval    = 1;       ///< global and PD VTU every n exchanges
@@ -62,6 +69,7 @@ namespace pumpd::coupling
   struct ExchangeRecord
   {
     std::size_t     exchange = 0;
+    std::size_t     tip_end  = 1; ///< the end of the crack polyline the tip sits at: 0 first vertex, 1 last
     double          lambda               = 0.; ///< the scene's load factor of the accepted state
     double          load_factor          = 0.; ///< lambda / lambda_c
     double          critical_load_factor = 0.; ///< lambda_c: G = G_c at the tip
@@ -69,8 +77,10 @@ namespace pumpd::coupling
     geometry::Point tip;
     double          crack_length = 0., k1 = 0., k2 = 0.; ///< at lambda, before the increment
     double          advance = 0.;                        ///< [m]
+    double          kink = 0.;           ///< of the increment's first segment from the tip direction [rad], + counter-clockwise
+    double          predicted_kink = 0.; ///< theta_c of the maximum hoop stress criterion from K_I, K_II [rad]
     double          horizon = 0.;                        ///< delta of the box [m]
-    std::string     decision;                            ///< accept | truncate | ...
+    std::string     decision;                            ///< accept | truncate | waits | lefm | ...
     geometry::Box   box;
     std::size_t     pd_nodes = 0, pd_iterations = 0, substeps = 0, repeats = 0;
     unsigned int    dofs = 0, enriched_dofs = 0;

@@ -16,27 +16,30 @@ TEST(CycleCheckpoint, RoundTripIsExact)
   std::filesystem::create_directories(dir);
   CycleState s;
   s.exchanges   = 17;
-  s.load_factor = 1.0999999999999999;
   s.finished    = true;
   s.crack       = {{0.1016, 0.}, {0.1016, 0.0254}, {0.10184914583, 0.02683101623}};
-  s.boxes       = {{0.0855, 0.0155, 0.118, 0.048}, {0.0905, 0.0265, 0.123, 0.059}};
   s.refinements = {{{0.1016, 0.0254}, 2}, {{0.10184914583, 0.02683101623}, 3}};
-  s.halvings    = 1;
+  s.ends[0]     = {{{0.07, 0.01, 0.09, 0.03}}, 0.95, 0, true};
+  s.ends[1]     = {{{0.0855, 0.0155, 0.118, 0.048}, {0.0905, 0.0265, 0.123, 0.059}}, 1.0999999999999999, 1, false};
   const std::string file = (dir / "checkpoint.h5").string();
   write_cycle_checkpoint(file, s);
   const auto r = read_cycle_checkpoint(file);
   EXPECT_EQ(r.exchanges, s.exchanges);
-  EXPECT_EQ(r.load_factor, s.load_factor);
   EXPECT_EQ(r.finished, s.finished);
-  EXPECT_EQ(r.halvings, s.halvings);
+  for (std::size_t e = 0; e < 2; ++e)
+    {
+      EXPECT_EQ(r.ends[e].load_factor, s.ends[e].load_factor);
+      EXPECT_EQ(r.ends[e].halvings, s.ends[e].halvings);
+      EXPECT_EQ(r.ends[e].stopped, s.ends[e].stopped);
+      ASSERT_EQ(r.ends[e].boxes.size(), s.ends[e].boxes.size());
+      EXPECT_EQ(r.ends[e].boxes.back().y_max, s.ends[e].boxes.back().y_max);
+    }
   ASSERT_EQ(r.crack.size(), s.crack.size());
   for (std::size_t k = 0; k < s.crack.size(); ++k)
     {
       EXPECT_EQ(r.crack[k].x, s.crack[k].x);
       EXPECT_EQ(r.crack[k].y, s.crack[k].y);
     }
-  ASSERT_EQ(r.boxes.size(), s.boxes.size());
-  EXPECT_EQ(r.boxes[1].y_max, s.boxes[1].y_max);
   ASSERT_EQ(r.refinements.size(), 2u);
   EXPECT_EQ(r.refinements[1].at.y, s.refinements[1].at.y);
   EXPECT_EQ(r.refinements[1].levels, 3u);
