@@ -1,0 +1,145 @@
+// Inclined centre crack in a plate under tension (prm/inclined-crack.prm, meshes/inclined-crack.geo):
+// a crack of length 2a = 20 mm at 45 degrees through the centre of a plate pulled by clamped grips.
+// The scene is symmetric under a half turn about the centre, so the two tips see the same K_I, K_II
+// and must grow as images of each other: a path point p of one tip's branch has its image -p on
+// the other's.
+//
+// Checked, for LEFM growth (three increments) and the global-local cycle (a PD box per tip, m = 4,
+// three exchanges):
+//  - both tips grow at every step or exchange;
+//  - asymmetry: the Hausdorff distance between one tip's branch (from the centre) and the half-turn
+//    of the other's, within 0.5 % of the growth increment for LEFM (gmsh's mesh is not exactly
+//    symmetric: K differs between the tips by about 1e-4) and one PD spacing for global-local
+//    (cracks.inclined.asymmetry_over_h);
+//  - the first kink: the angle of the first segment of each tip's first accepted increment from
+//    the tip's direction, against the maximum hoop stress angle theta_c of the computed K_I, K_II
+//    (cracks.inclined.kink_err_deg, the larger of the two tips). LEFM's first kink is theta_c by
+//    construction. PD's kink is a property of the nonlocal model: it approaches theta_c as the
+//    horizon shrinks against the crack (the study below prints it for delta = 4, 2, 1 mm); at this
+//    test's delta = 4 mm, m = 4 it is checked within 15 degrees and to turn the same way.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+#include <sstream>
+
+#include "global_local.h"
+#include "lefm_growth.h"
+#include "metric.h"
+#include "path_metrics.h"
+#include "scene_file.h"
+
+using namespace pumpd;
+using geometry::Point;
+
+namespace
+{
+  const double degree = std::acos(-1.) / 180.;
+
+  /// The branch grown from each end of the crack, each starting at the crack's centre (the
+  /// midpoint of the initial crack), the first from the first vertex's end.
+  std::array<geometry::Polyline, 2> branches(const geometry::Polyline &path, const geometry::Polyline &initial)
+  {
+    const Point centre = 0.5 * (initial.front() + initial.back());
+    std::size_t first = 0, last = 0;
+    for (std::size_t k = 0; k < path.size(); ++k)
+      {
+        if (geometry::norm(path[k] - initial.front()) < 1e-9)
+          first = k;
+        if (geometry::norm(path[k] - initial.back()) < 1e-9)
+          last = k;
+      }
+    std::array<geometry::Polyline, 2> b{geometry::Polyline{centre}, geometry::Polyline{centre}};
+    for (std::size_t k = first + 1; k-- > 0;)
+      b[0].push_back(path[k]);
+    for (std::size_t k = last; k < path.size(); ++k)
+      b[1].push_back(path[k]);
+    return b;
+  }
+
+  /// Hausdorff distance between one branch and the half-turn of the other about the centre [m].
+  double asymmetry(const geometry::Polyline &path, const geometry::Polyline &initial)
+  {
+    const auto  b      = branches(path, initial);
+    const Point centre = b[0].front();
+    geometry::Polyline turned;
+    for (const auto &p : b[0])
+      turned.push_back(2. * centre - p);
+    return std::max(coupling::directed_max_distance(turned, b[1]), coupling::directed_max_distance(b[1], turned));
+  }
+
+  coupling::Parameters inclined(const std::string &output) { return test::scene_file("prm/inclined-crack.prm", output); }
+} // namespace
+
+TEST(InclinedCrack, LefmGrowthGrowsBothTipsSymmetrically)
+{
+  auto p           = inclined("inclined_lefm");
+  p.lefm.max_steps = 3;
+  const auto         scene = coupling::build_scene(p.scene);
+  std::ostringstream log;
+  const auto         r = coupling::run_lefm_growth(scene, p.lefm_growth_settings(), log);
+  std::cout << log.str();
+  EXPECT_EQ(r.increments, 3u);
+  std::size_t grown[2] = {0, 0};
+  for (const auto &s : r.steps)
+    if (s.increment > 0.)
+      ++grown[s.tip];
+  EXPECT_EQ(grown[0], 3u);
+  EXPECT_EQ(grown[1], 3u);
+  const double a = asymmetry(r.path, scene.crack());
+  EXPECT_LT(a, 0.005 * p.lefm.growth_increment);
+  test::metric("cracks.inclined.lefm_asymmetry_mm", 1e3 * a);
+}
+
+TEST(InclinedCrack, GlobalLocalGrowsBothTipsSymmetricallyWithTheHoopStressKink)
+{
+  auto p                    = inclined("inclined_global_local");
+  p.pd.horizon_over_spacing = 4;
+  p.cycle.max_exchanges     = 3;
+  const auto         scene  = coupling::build_scene(p.scene);
+  std::ostringstream log;
+  const auto         r = coupling::run_global_local(scene, p.global_local_settings(), log);
+  std::cout << log.str();
+  ASSERT_EQ(r.exchanges.size(), 6u); // a record per tip and exchange
+  double kink_error = 0.;
+  for (const auto &e : r.exchanges)
+    {
+      EXPECT_EQ(e.decision, "accept") << "exchange " << e.exchange << ", tip end " << e.tip_end;
+      EXPECT_GE(e.advance, p.cycle.exchange.min_advance - 1e-9);
+      if (e.exchange == 0)
+        {
+          EXPECT_LT(e.predicted_kink, -45. * degree); // K_II ~ K_I: theta_c ~ -53 degrees
+          EXPECT_LT(e.kink, -30. * degree);
+          kink_error = std::max(kink_error, std::abs(e.kink - e.predicted_kink) / degree);
+        }
+    }
+  const double a = asymmetry(r.path, scene.crack()) / p.pd.spacing();
+  EXPECT_LT(a, 1.);
+  EXPECT_LT(kink_error, 15.);
+  test::metric("cracks.inclined.asymmetry_over_h", a);
+  test::metric("cracks.inclined.kink_err_deg", kink_error);
+}
+
+// Study (ctest -L study): the first PD kink against theta_c as the horizon shrinks (m = 8; the
+// box, advance and margin scale with it): cracks.inclined.kink_err_deg_delta<delta in um>.
+TEST(InclinedCrackStudy, DISABLED_KinkAgainstHorizon)
+{
+  for (const double delta : {0.004, 0.002, 0.001})
+    {
+      auto p                     = inclined("");
+      p.pd.horizon               = delta;
+      p.cycle.max_exchanges      = 1;
+      p.cycle.exchange.min_advance = delta;
+      p.cycle.exchange.max_advance = 2. * delta;
+      p.cycle.box.margin           = 2. * delta;
+      const auto         scene     = coupling::build_scene(p.scene);
+      std::ostringstream log;
+      const auto         r = coupling::run_global_local(scene, p.global_local_settings(), log);
+      double             error = 0.;
+      for (const auto &e : r.exchanges)
+        error = std::max(error, std::abs(e.kink - e.predicted_kink) / degree);
+      std::cout << "delta " << delta << " m: first kink " << r.exchanges.front().kink / degree << " deg, theta_c "
+                << r.exchanges.front().predicted_kink / degree << " deg\n";
+      test::metric("cracks.inclined.kink_err_deg_delta" + std::to_string(int(std::round(delta * 1e6))) + "um", error);
+    }
+}
