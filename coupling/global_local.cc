@@ -295,6 +295,11 @@ namespace pumpd::coupling
         throw InvalidParameter("Minimum advance", std::to_string(s.cycle.exchange.min_advance),
                                "must be at least two PD spacings (" + std::to_string(2. * h) +
                                  " m): a shorter advance is within the noise of the extracted tip");
+      if (const auto &tips = crack->tips(); tips.size() == 2 && norm(tips[0].position - tips[1].position) < s.pd.horizon)
+        throw InvalidParameter("Initial cracks", to_text(crack->vertices()),
+                               "its two tips lie within one horizon (" + pumpd::to_text(s.pd.horizon, 3) +
+                                 " m) of each other: PD cannot resolve a crack shorter than its horizon; give an "
+                                 "interior crack at least a horizon long");
       if (s.cycle.resume)
         {
           if (checkpoint.empty())
