@@ -131,19 +131,31 @@ namespace pumpd::coupling
     last_scale = scale;
   }
 
-  Box BoxPolicy::place(Point tip, Point d, double scale)
+  Box BoxPolicy::place(Point tip, Point d, double scale) { return place(std::vector{tip}, std::vector{d}, scale); }
+
+  Box BoxPolicy::place(const std::vector<Point> &tips, const std::vector<Point> &d, double scale)
   {
     const bool rescaled = scale != last_scale;
     if (rescaled)
       rescale(scale);
-    if (!boxes.empty() && !rescaled && keeps(boxes.back(), tip, d))
+    bool kept = !boxes.empty() && !rescaled;
+    for (std::size_t k = 0; k < tips.size(); ++k)
+      kept = kept && keeps(boxes.back(), tips[k], d[k]);
+    if (kept)
       {
         last_moved = false;
         boxes.push_back(boxes.back());
         return boxes.back();
       }
     last_moved = true;
-    boxes.push_back(fitted(square_ahead(tip, d, s)));
+    Box box = square_ahead(tips.front(), d.front(), s);
+    for (std::size_t k = 1; k < tips.size(); ++k)
+      {
+        const Box own = square_ahead(tips[k], d[k], s);
+        box           = {std::min(box.x_min, own.x_min), std::min(box.y_min, own.y_min), std::max(box.x_max, own.x_max),
+                         std::max(box.y_max, own.y_max)};
+      }
+    boxes.push_back(fitted(box));
     return boxes.back();
   }
 

@@ -38,6 +38,10 @@ namespace pumpd::coupling
     /// settings (horizon, spacing, size, margin, maximum size) times `scale`; recorded in history().
     /// A box of another scale is never kept.
     geometry::Box place(geometry::Point tip, geometry::Point direction, double scale = 1.);
+    /// The box shared by several tips: the smallest box holding each tip's own square (as placed
+    /// for it alone), fitted as one; kept while it keeps every tip.
+    geometry::Box place(const std::vector<geometry::Point> &tips, const std::vector<geometry::Point> &directions,
+                        double scale = 1.);
     /// Half the smaller bounding-box side of the smallest hole the box at this tip (settings as
     /// given, unscaled) would take in or grow for; infinity if none.
     double smallest_hole_within_reach(geometry::Point tip, geometry::Point direction) const;

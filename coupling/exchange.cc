@@ -84,7 +84,8 @@ namespace pumpd::coupling
   } // namespace
 
   ExchangeOutcome run_exchange(const local::PdModel &model, const BoundaryTransfer &transfer,
-                               ExchangeController &controller, const TipState &tip, double allowed,
+                               ExchangeController &controller, const std::vector<TipState> &tips,
+                               const std::vector<double> &allowed,
                                const std::function<bool(const geometry::Polyline &)> &arrives,
                                const PeridynamicsSettings &pd, std::ostream &out)
   {
@@ -93,7 +94,7 @@ namespace pumpd::coupling
     extraction.horizon   = pd.horizon;
     local::BoundaryLayer           layer(model);
     const local::DynamicRelaxation relax(model, pd.tolerance, pd.max_iterations);
-    const double                   lambda_c = tip.critical_load_factor;
+    const double                   lambda_c = tips.front().critical_load_factor;
 
     ExchangeOutcome r;
     local::State   &s      = r.state;
@@ -118,9 +119,12 @@ namespace pumpd::coupling
         r.seconds_pd += seconds_since(t);
 
         t = Clock::now();
+        const DamageField damage = damage_field(model, s);
+        r.increments.clear();
         try
           {
-            r.increment = extract_crack(damage_field(model, s), tip.position, tip.direction, extraction);
+            for (const auto &tip : tips)
+              r.increments.push_back(extract_crack(damage, tip.position, tip.direction, extraction));
           }
         catch (const CrackBranching &e)
           {
@@ -129,10 +133,17 @@ namespace pumpd::coupling
         r.seconds_extraction += seconds_since(t);
         if (!r.branching.empty())
           break;
-        const bool reaches = r.increment.path.size() > 1 && arrives(r.increment.path);
-        r.decision         = controller.judge(r.increment.length(), allowed, reaches);
+        std::size_t farthest = 0;
+        for (std::size_t k = 1; k < tips.size(); ++k)
+          if (r.increments[k].length() / allowed[k] > r.increments[farthest].length() / allowed[farthest])
+            farthest = k;
+        const auto &increment = r.increments[farthest];
+        const bool  reaches   = increment.path.size() > 1 && arrives(increment.path);
+        r.decision            = controller.judge(increment.length(), allowed[farthest], reaches);
         out << "    PD at " << std::setprecision(4) << lambda << " lambda_c: " << relaxed.iterations
-            << " DR iterations, advance " << r.increment.length() << " m -> " << to_text(r.decision) << "\n"
+            << " DR iterations, advance " << increment.length() << " m"
+            << (tips.size() > 1 ? " (tip " + std::to_string(farthest) + " of the box)" : "") << " -> "
+            << to_text(r.decision) << "\n"
             << std::setprecision(6);
         if (r.decision == ExchangeController::Decision::raise)
           {

@@ -1,7 +1,8 @@
 // The scheme of one global-local exchange (preCICE's CouplingScheme::advance): quasi-static PD
 // states of one box along the load factor, each judged by the ExchangeController (raise the load,
-// repeat a too-long advance with half the increment, accept), the crack increment read off each
-// state's damage (CrackExtractor). Each state starts from the secant through the last two
+// repeat a too-long advance with half the increment, accept), the crack increment of each tip in
+// the box read off each state's damage (CrackExtractor). The controller judges the tip that has
+// gone farthest against its allowed advance, so the box's tips grow at one load. Each state starts from the secant through the last two
 // equilibria of the exchange (first-order continuation in the load factor).
 #pragma once
 
@@ -9,6 +10,7 @@
 #include <functional>
 #include <iosfwd>
 #include <string>
+#include <vector>
 
 #include "boundary_transfer.h"
 #include "crack_extraction.h"
@@ -19,7 +21,7 @@ namespace pumpd::coupling
 {
   struct ExchangeOutcome
   {
-    CrackIncrement               increment;
+    std::vector<CrackIncrement>  increments;        ///< per tip, in the order given
     ExchangeController::Decision decision = ExchangeController::Decision::raise;
     std::string                  branching;         ///< the ridge split there (refused); "" otherwise
     double                       load_factor = 0.;  ///< lambda / lambda_c of the last state
@@ -29,11 +31,13 @@ namespace pumpd::coupling
     double                       seconds_pd = 0., seconds_extraction = 0.;
   };
 
-  /// Runs the states of one exchange for the tip at critical load factor lambda_c, an advance of
-  /// at most `allowed`; `arrives(path)` says whether an increment reaches a hole or the outline
-  /// (accepted whatever its length). Progress (one line per state) to `out`.
+  /// Runs the states of one exchange for the tips in the box, the load factor relative to the
+  /// first tip's critical load factor lambda_c; tip k advances at most allowed[k]; `arrives(path)`
+  /// says whether an increment reaches a hole or the outline (accepted whatever its length).
+  /// Progress (one line per state) to `out`.
   ExchangeOutcome run_exchange(const local::PdModel &model, const BoundaryTransfer &transfer,
-                               ExchangeController &controller, const TipState &tip, double allowed,
+                               ExchangeController &controller, const std::vector<TipState> &tips,
+                               const std::vector<double> &allowed,
                                const std::function<bool(const geometry::Polyline &)> &arrives,
                                const PeridynamicsSettings &pd, std::ostream &out);
 

@@ -189,16 +189,21 @@ namespace pumpd::coupling
       bool                 stopped  = false;
     };
 
-    /// One tip's part of an exchange: its state under the global solve, the PD body and the
-    /// outcome of its states (none for an LEFM increment through an unresolved ligament).
+    /// One tip's part of an exchange: its state under the global solve, its increment and the
+    /// decision on it; the PD body and its last state where the tip leads a box.
     struct TipExchange
     {
       std::size_t                   end = 1;
       TipState                      tip;
       ExchangeRecord                record;
-      std::optional<local::PdModel> model;
-      ExchangeOutcome               outcome;
-      bool                          grows = false; ///< its increment goes into the crack at this exchange's load
+      geometry::Polyline            increment; ///< from the tip
+      Decision                      decision = Decision::raise;
+      std::string                   branching;
+      std::optional<local::PdModel> model;  ///< of the box it leads; none where it shares one or grew by LEFM
+      local::State                  state;  ///< the box's last PD state
+      std::size_t                   box = 0; ///< the index of the part that leads its box (itself if it leads)
+      bool                          by_lefm = false;
+      bool                          grows   = false; ///< its increment goes into the crack at this exchange's load
     };
 
     /// One run of the cycle: its parts (global problem, a box and a controller per tip, recorder)
@@ -218,12 +223,18 @@ namespace pumpd::coupling
       /// The horizon of this tip's box (resolution.h), chosen by the path ahead of it: the PD
       /// settings, the box and the advance follow it.
       void resolve(TipExchange &part);
-      /// The box around the tip and the PD body in it (the whole crack as broken bonds).
-      void pd_body(TipExchange &part);
+      /// The tips (indices into parts) that share each box: tips within half a box side of each
+      /// other, the one with the smallest lambda_c first (it leads: the box's load is in its
+      /// lambda_c); a tip whose ligament no box resolves is alone.
+      std::vector<std::vector<std::size_t>> share_boxes(const std::vector<TipExchange> &parts) const;
+      /// The box around its tips and the PD body in it (the whole crack as broken bonds), at the
+      /// finest horizon its tips' resolution asks for.
+      void pd_body(const std::vector<std::size_t> &box, std::vector<TipExchange> &parts);
       /// The mapping of the global displacement onto the body's nodes.
-      BoundaryTransfer transfer_to(TipExchange &part);
-      /// The PD states along the load until the crack grows at this tip (exchange.h).
-      void exchange(const BoundaryTransfer &transfer, TipExchange &part);
+      BoundaryTransfer transfer_to(TipExchange &lead);
+      /// The PD states along the load until the crack grows at a tip of the box (exchange.h).
+      void exchange(const BoundaryTransfer &transfer, const std::vector<std::size_t> &box,
+                    std::vector<TipExchange> &parts);
       /// The load of the exchange and the tips that grow at it (README, "Several tips"); the
       /// accepted increments into the crack; "" or why the run stops (branching, no growth, every
       /// tip stopped at a hole or the outline).
@@ -339,16 +350,15 @@ namespace pumpd::coupling
               break;
             }
           for (auto &part : parts)
-            {
-              resolve(part);
-              if (ligament_unresolved(part.tip))
-                grow_by_lefm(part);
-              else
-                {
-                  pd_body(part);
-                  exchange(transfer_to(part), part);
-                }
-            }
+            resolve(part);
+          for (const auto &box : share_boxes(parts))
+            if (ligament_unresolved(parts[box.front()].tip))
+              grow_by_lefm(parts[box.front()]);
+            else
+              {
+                pd_body(box, parts);
+                exchange(transfer_to(parts[box.front()]), box, parts);
+              }
           stop = grow(parts);
           write(n, parts, stop);
           if (!stop.empty())
@@ -446,62 +456,123 @@ namespace pumpd::coupling
       part.record.horizon    = track.pd.horizon;
     }
 
-    void Cycle::pd_body(TipExchange &part)
+    std::vector<std::vector<std::size_t>> Cycle::share_boxes(const std::vector<TipExchange> &parts) const
     {
-      const auto t      = Clock::now();
-      auto      &track  = tracks[part.end];
-      part.record.box   = track.boxes.place(part.tip.position, part.tip.direction, track.length_scale());
-      part.model.emplace(material, track.pd.horizon, track.pd.horizon_over_spacing,
-                         local::Region{scene.body, part.record.box, {crack->vertices()}});
-      part.record.pd_nodes                 = part.model->nodes().size();
-      part.record.seconds_point_evaluation = seconds_since(t);
-      box_area_sum += part.record.box.width() * part.record.box.height();
+      std::vector<std::vector<std::size_t>> boxes;
+      for (std::size_t k = 0; k < parts.size(); ++k)
+        {
+          const auto near = [&](std::size_t m) {
+            const double side = s.cycle.box.size * std::min(tracks[parts[k].end].length_scale(),
+                                                              tracks[parts[m].end].length_scale());
+            return norm(parts[k].tip.position - parts[m].tip.position) < 0.5 * side;
+          };
+          auto shared = boxes.end();
+          if (!ligament_unresolved(parts[k].tip))
+            shared = std::find_if(boxes.begin(), boxes.end(), [&](const std::vector<std::size_t> &box) {
+              return !ligament_unresolved(parts[box.front()].tip) && std::all_of(box.begin(), box.end(), near);
+            });
+          if (shared == boxes.end())
+            boxes.push_back({k});
+          else
+            shared->push_back(k);
+        }
+      for (auto &box : boxes)
+        std::stable_sort(box.begin(), box.end(), [&](std::size_t a, std::size_t b) {
+          return parts[a].tip.critical_load_factor < parts[b].tip.critical_load_factor;
+        });
+      return boxes;
+    }
+
+    void Cycle::pd_body(const std::vector<std::size_t> &box, std::vector<TipExchange> &parts)
+    {
+      const auto   t    = Clock::now();
+      TipExchange &lead = parts[box.front()];
+      unsigned int finest = 0;
+      for (std::size_t m : box)
+        finest = std::max(finest, tracks[parts[m].end].halvings);
+      std::vector<Point> tips, directions;
+      for (std::size_t m : box)
+        {
+          auto &track         = tracks[parts[m].end];
+          track.halvings      = finest;
+          track.pd.horizon    = track.length_scale() * s.pd.horizon;
+          parts[m].record.horizon = track.pd.horizon;
+          parts[m].box        = box.front();
+          tips.push_back(parts[m].tip.position);
+          directions.push_back(parts[m].tip.direction);
+        }
+      auto &track     = tracks[lead.end];
+      lead.record.box = track.boxes.place(tips, directions, track.length_scale());
+      lead.model.emplace(material, track.pd.horizon, track.pd.horizon_over_spacing,
+                         local::Region{scene.body, lead.record.box, {crack->vertices()}});
+      for (std::size_t m : box)
+        {
+          parts[m].record.box      = lead.record.box;
+          parts[m].record.pd_nodes = lead.model->nodes().size();
+        }
+      lead.record.seconds_point_evaluation = seconds_since(t);
+      box_area_sum += lead.record.box.width() * lead.record.box.height();
       ++boxes_placed;
     }
 
-    BoundaryTransfer Cycle::transfer_to(TipExchange &part)
+    BoundaryTransfer Cycle::transfer_to(TipExchange &lead)
     {
       const auto       t = Clock::now();
-      BoundaryTransfer transfer(global, *part.model);
-      part.record.seconds_point_evaluation += seconds_since(t);
+      BoundaryTransfer transfer(global, *lead.model);
+      lead.record.seconds_point_evaluation += seconds_since(t);
       return transfer;
     }
 
-    void Cycle::exchange(const BoundaryTransfer &transfer, TipExchange &part)
+    void Cycle::exchange(const BoundaryTransfer &transfer, const std::vector<std::size_t> &box,
+                         std::vector<TipExchange> &parts)
     {
-      auto        &track  = tracks[part.end];
-      auto        &record = part.record;
-      const auto  &tip    = part.tip;
-      const double scale  = track.length_scale();
-      const double allowed =
-        std::min(scale * track.controller.allowed_advance(scene.body.clearance(tip.position) / scale),
-                 max_length - record.crack_length);
-      auto &outcome = part.outcome;
-      outcome       = run_exchange(
-        *part.model, transfer, track.controller, tip, allowed,
+      TipExchange          &lead  = parts[box.front()];
+      auto                 &track = tracks[lead.end];
+      const double          scale = track.length_scale();
+      std::vector<TipState> tips;
+      std::vector<double>   allowed;
+      for (std::size_t m : box)
+        {
+          tips.push_back(parts[m].tip);
+          allowed.push_back(std::min(scale * track.controller.allowed_advance(
+                                               scene.body.clearance(parts[m].tip.position) / scale),
+                                     max_length - lead.record.crack_length));
+        }
+      auto outcome = run_exchange(
+        *lead.model, transfer, track.controller, tips, allowed,
         [&](const geometry::Polyline &path) { return !arrival_of(path, track.pd.horizon).reason.empty(); }, track.pd,
         out);
-      outcome.increment.path    = truncate(outcome.increment.path, allowed);
-      record.pd_iterations      = outcome.iterations;
-      record.substeps           = outcome.states;
-      record.repeats            = outcome.repeats;
-      record.seconds_pd         = outcome.seconds_pd;
-      record.seconds_extraction = outcome.seconds_extraction;
       result.pd_node_steps += outcome.node_steps;
-      record.load_factor = outcome.load_factor;
-      record.lambda      = outcome.load_factor * tip.critical_load_factor;
-      record.k1          = tip.k1 * record.lambda;
-      record.k2          = tip.k2 * record.lambda;
-      record.decision    = outcome.branching.empty() ? to_text(outcome.decision) : "branching";
+      const double lambda = outcome.load_factor * lead.tip.critical_load_factor;
+      for (std::size_t k = 0; k < box.size(); ++k)
+        {
+          auto &part   = parts[box[k]];
+          auto &record = part.record;
+          if (k < outcome.increments.size())
+            part.increment = truncate(outcome.increments[k].path, allowed[k]);
+          part.decision             = outcome.decision;
+          part.branching            = outcome.branching;
+          record.pd_iterations      = outcome.iterations;
+          record.substeps           = outcome.states;
+          record.repeats            = outcome.repeats;
+          record.lambda             = lambda;
+          record.load_factor        = lambda / part.tip.critical_load_factor;
+          record.k1                 = part.tip.k1 * lambda;
+          record.k2                 = part.tip.k2 * lambda;
+          record.decision           = outcome.branching.empty() ? to_text(outcome.decision) : "branching";
+        }
+      lead.record.seconds_pd         = outcome.seconds_pd;
+      lead.record.seconds_extraction = outcome.seconds_extraction;
+      lead.state                     = std::move(outcome.state);
     }
 
     std::string Cycle::grow(std::vector<TipExchange> &parts)
     {
       for (const auto &part : parts)
-        if (!part.outcome.branching.empty())
-          return "crack branching in the PD box, refused: " + part.outcome.branching;
+        if (!part.branching.empty())
+          return "crack branching in the PD box, refused: " + part.branching;
       const auto grew = [](const TipExchange &part) {
-        return part.outcome.decision == Decision::accept || part.outcome.decision == Decision::truncate;
+        return part.decision == Decision::accept || part.decision == Decision::truncate;
       };
       for (auto &part : parts)
         {
@@ -532,7 +603,7 @@ namespace pumpd::coupling
               continue;
             }
           const double before = crack->length();
-          const auto  &path   = part.outcome.increment.path;
+          const auto  &path   = part.increment;
           const auto   reason = grow_tip(part.end, path);
           part.record.advance = crack->length() - before;
           if (path.size() > 1)
@@ -542,7 +613,7 @@ namespace pumpd::coupling
             {
               tracks[part.end].stopped = true;
               reasons[part.end] =
-                part.model ? reason :
+                !part.by_lefm ? reason :
                              reason + " (the last ligament, narrower than " +
                                pumpd::to_text(s.cycle.resolution.clearance_over_horizon, 3) +
                                " horizons of the finest PD box, grown by LEFM: maximum hoop stress at G = G_c)";
@@ -583,8 +654,9 @@ namespace pumpd::coupling
       const double angle = kink_angle(tip.k1, tip.k2);
       const Point  n{-tip.direction.y, tip.direction.x};
       const Point  e = std::cos(angle) * tip.direction + std::sin(angle) * n;
-      part.outcome.increment.path = {tip.position, tip.position + tracks[part.end].pd.horizon * e};
-      part.outcome.decision       = Decision::accept;
+      part.increment = {tip.position, tip.position + tracks[part.end].pd.horizon * e};
+      part.decision  = Decision::accept;
+      part.by_lefm   = true;
       auto &record                = part.record;
       record.decision             = "lefm";
       record.load_factor          = 1.;
@@ -613,7 +685,7 @@ namespace pumpd::coupling
           recorder.global_state(global, double(n));
           for (const auto &part : parts)
             if (part.model)
-              recorder.pd_state(*part.model, part.outcome.state);
+              recorder.pd_state(*part.model, part.state);
         }
       recorder.crack_path(crack->vertices());
       if (recorder.writes())
@@ -654,10 +726,12 @@ namespace pumpd::coupling
                 << (tracks[part.end].boxes.moved() ? " new" : "") << "  delta " << 1e3 * record.horizon << " mm, "
                 << record.pd_nodes << " PD nodes, " << record.substeps << " states, " << record.pd_iterations
                 << " DR its";
-          else
+          else if (part.by_lefm)
             out << "LEFM increment (ligament below " << s.cycle.resolution.clearance_over_horizon
                 << " horizons of the finest box)";
-          if (!part.grows && part.outcome.decision != Decision::too_small)
+          else
+            out << "in the box of tip " << parts[part.box].end;
+          if (!part.grows && part.decision != Decision::too_small)
             out << "  waits: grew above this exchange's load";
           out << "  ETA <= " << std::fixed << std::setprecision(0) << eta << " s" << std::defaultfloat
               << std::setprecision(6) << std::endl;

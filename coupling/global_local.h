@@ -16,7 +16,8 @@
 //     of 2-3;
 //  5. the recorder writes what people look at, and the checkpoint.
 // The crack is one polyline with one tip (an edge crack) or two (an interior crack). Each tip has
-// its own box, controller and horizon; steps 2-3 run per tip. A tip gets a box when its G / G_c
+// its own box, controller and horizon; steps 2-3 run per box. Tips within half a box side of
+// each other share one box (they grow in the same PD states, at one load). A tip gets a box when its G / G_c
 // is at least `Box threshold` at the load where the first tip reaches G = G_c; the others wait.
 // The exchange's load is the lowest at which a tip grew; a tip that grew within one load
 // increment of its own ladder above it grows too (its states cannot tell the two loads apart),

@@ -11,6 +11,7 @@
 //    of the other's, within 0.5 % of the growth increment for LEFM (gmsh's mesh is not exactly
 //    symmetric: K differs between the tips by about 1e-4) and one PD spacing for global-local
 //    (cracks.inclined.asymmetry_over_h);
+//  - tips closer than half a box side share one box (a shorter crack);
 //  - the first kink: the angle of the first segment of each tip's first accepted increment from
 //    the tip's direction, against the maximum hoop stress angle theta_c of the computed K_I, K_II
 //    (cracks.inclined.kink_err_deg, the larger of the two tips). LEFM's first kink is theta_c by
@@ -118,6 +119,31 @@ TEST(InclinedCrack, GlobalLocalGrowsBothTipsSymmetricallyWithTheHoopStressKink)
   EXPECT_LT(kink_error, 15.);
   test::metric("cracks.inclined.asymmetry_over_h", a);
   test::metric("cracks.inclined.kink_err_deg", kink_error);
+}
+
+// A shorter crack (2a = 10 mm): its tips lie within half a box side of each other, so they share
+// one PD box, grow in the same PD states at one load, and stay images of each other.
+TEST(InclinedCrack, CloseTipsShareOneBox)
+{
+  auto p                    = inclined("inclined_shared_box");
+  p.pd.horizon_over_spacing = 4;
+  p.cycle.max_exchanges     = 1;
+  p.scene.initial_cracks    = "-0.0035355,-0.0035355; 0.0035355,0.0035355";
+  const auto         scene  = coupling::build_scene(p.scene);
+  std::ostringstream log;
+  const auto         r = coupling::run_global_local(scene, p.global_local_settings(), log);
+  std::cout << log.str();
+  ASSERT_EQ(r.exchanges.size(), 2u);
+  const auto &first = r.exchanges[0], &second = r.exchanges[1];
+  EXPECT_EQ(first.box.x_min, second.box.x_min);
+  EXPECT_EQ(first.box.y_max, second.box.y_max);
+  EXPECT_TRUE(first.box.contains(first.tip) && first.box.contains(second.tip));
+  EXPECT_EQ(r.boxes.size(), 1u);
+  EXPECT_EQ(first.lambda, second.lambda);
+  EXPECT_GE(std::min(first.advance, second.advance), p.cycle.exchange.min_advance - 1e-9);
+  const double a = asymmetry(r.path, scene.crack()) / p.pd.spacing();
+  EXPECT_LT(a, 1.);
+  test::metric("cracks.inclined.shared_box_asymmetry_over_h", a);
 }
 
 // Study (ctest -L study): the first PD kink against theta_c as the horizon shrinks (m = 8; the
