@@ -35,11 +35,12 @@ namespace pumpd::coupling
     const hid_t       file    = H5Fcreate(partial.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
     fail_if(file < 0, "cannot create " + partial);
     std::vector<double> crack, boxes, refined, cycle{double(state.exchanges), state.finished ? 1. : 0.};
-    for (const auto &p : state.crack)
-      crack.insert(crack.end(), {p.x, p.y});
+    for (std::size_t c = 0; c < state.cracks.size(); ++c)
+      for (const auto &p : state.cracks[c])
+        crack.insert(crack.end(), {double(c), p.x, p.y});
     for (const auto &r : state.refinements)
       refined.insert(refined.end(), {r.at.x, r.at.y, double(r.levels)});
-    for (std::size_t e = 0; e < 2; ++e)
+    for (std::size_t e = 0; e < state.ends.size(); ++e)
       {
         const auto &end = state.ends[e];
         for (const auto &b : end.boxes)
@@ -74,18 +75,29 @@ namespace pumpd::coupling
         throw;
       }
     H5Fclose(file);
-    fail_if(crack.size() < 4 || crack.size() % 2 != 0 || boxes.size() % 5 != 0 || refined.size() % 3 != 0 ||
-              cycle.size() != 8,
+    fail_if(crack.size() < 6 || crack.size() % 3 != 0 || boxes.size() % 5 != 0 || refined.size() % 3 != 0 ||
+              cycle.size() < 2 || (cycle.size() - 2) % 6 != 0,
             path + " is not a global-local cycle checkpoint");
-    for (std::size_t i = 0; i < crack.size(); i += 2)
-      s.crack.push_back({crack[i], crack[i + 1]});
+    s.ends.resize((cycle.size() - 2) / 3);
+    for (std::size_t i = 0; i < crack.size(); i += 3)
+      {
+        const auto c = std::size_t(crack[i]);
+        fail_if(c >= s.ends.size() / 2 || c > s.cracks.size(), path + " is not a global-local cycle checkpoint");
+        if (c == s.cracks.size())
+          s.cracks.emplace_back();
+        s.cracks[c].push_back({crack[i + 1], crack[i + 2]});
+      }
     for (std::size_t i = 0; i < boxes.size(); i += 5)
-      s.ends[boxes[i] == 0. ? 0 : 1].boxes.push_back({boxes[i + 1], boxes[i + 2], boxes[i + 3], boxes[i + 4]});
+      {
+        const auto e = std::size_t(boxes[i]);
+        fail_if(e >= s.ends.size(), path + " is not a global-local cycle checkpoint");
+        s.ends[e].boxes.push_back({boxes[i + 1], boxes[i + 2], boxes[i + 3], boxes[i + 4]});
+      }
     for (std::size_t i = 0; i < refined.size(); i += 3)
       s.refinements.push_back({{refined[i], refined[i + 1]}, (unsigned int)(refined[i + 2])});
     s.exchanges = std::size_t(cycle[0]);
     s.finished  = cycle[1] != 0.;
-    for (std::size_t e = 0; e < 2; ++e)
+    for (std::size_t e = 0; e < s.ends.size(); ++e)
       {
         s.ends[e].load_factor = cycle[2 + 3 * e];
         s.ends[e].halvings    = (unsigned int)(cycle[3 + 3 * e]);

@@ -1,11 +1,10 @@
 // The state of the global-local cycle between two exchanges, in HDF5 (checkpoint.h5), so that an
 // interrupted run resumes where it stopped. The PD boxes are rebuilt at every exchange from the
-// crack polyline, so the crack, the counters, the refinements of the global mesh (tip positions
-// and levels: the same mesh on resume) and, per end of the crack, its tip's boxes, accepted load,
+// crack polylines, so the cracks, the counters, the refinements of the global mesh (tip positions
+// and levels: the same mesh on resume) and, per end of each crack, its tip's boxes, accepted load,
 // last box's horizon and whether it stopped are the whole state.
 #pragma once
 
-#include <array>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -28,9 +27,9 @@ namespace pumpd::coupling
   {
     std::size_t                exchanges = 0; ///< exchanges done so far
     bool                       finished  = false;
-    geometry::Polyline         crack;
-    std::vector<Refinement>    refinements; ///< of every global solve so far
-    std::array<TipEndState, 2> ends;        ///< the tips at the first and the last vertex
+    std::vector<geometry::Polyline> cracks;
+    std::vector<Refinement>         refinements; ///< of every global solve so far
+    std::vector<TipEndState>        ends; ///< 2 c + e: crack c's tip at its first (e = 0) or last vertex
   };
 
   /// Throws std::runtime_error if the file cannot be written.

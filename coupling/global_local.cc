@@ -97,24 +97,24 @@ namespace pumpd::coupling
     const char *load_steps_header =
       "exchange,lambda,load_factor,critical_load_factor,load,displacement,tip_x_m,tip_y_m,crack_length_m,K_I_Pa_sqrt_m,"
       "K_II_Pa_sqrt_m,advance_m,decision,pd_nodes,pd_substeps,pd_repeats,pd_iterations,dofs,seconds_global,"
-      "seconds_point_evaluation,seconds_pd,seconds_extraction,horizon_m,tip_end,kink_deg,predicted_kink_deg";
+      "seconds_point_evaluation,seconds_pd,seconds_extraction,horizon_m,tip_end,kink_deg,predicted_kink_deg,crack";
 
     void write_row(CsvFile &table, const ExchangeRecord &r)
     {
       table.row(r.exchange, r.lambda, r.load_factor, r.critical_load_factor, r.load, r.displacement, r.tip.x, r.tip.y,
                 r.crack_length, r.k1, r.k2, r.advance, r.decision, r.pd_nodes, r.substeps, r.repeats, r.pd_iterations,
                 r.dofs, r.seconds_global, r.seconds_point_evaluation, r.seconds_pd, r.seconds_extraction, r.horizon,
-                r.tip_end, r.kink * 180. / M_PI, r.predicted_kink * 180. / M_PI);
+                r.tip_end, r.kink * 180. / M_PI, r.predicted_kink * 180. / M_PI, r.crack);
     }
 
-    void write_boxes(CsvFile &table, const std::vector<geometry::Box> &boxes, std::size_t tip_end)
+    void write_boxes(CsvFile &table, const std::vector<geometry::Box> &boxes, std::size_t track)
     {
       for (std::size_t k = 0; k < boxes.size(); ++k)
         {
           const auto &b     = boxes[k];
           const bool  moved = k == 0 || b.x_min != boxes[k - 1].x_min || b.y_min != boxes[k - 1].y_min ||
                              b.x_max != boxes[k - 1].x_max || b.y_max != boxes[k - 1].y_max;
-          table.row(k, b.x_min, b.y_min, b.x_max, b.y_max, moved, tip_end);
+          table.row(k, b.x_min, b.y_min, b.x_max, b.y_max, moved, track % 2, track / 2);
         }
     }
 
@@ -157,9 +157,12 @@ namespace pumpd::coupling
 
   namespace
   {
-    /// The end of the crack polyline a tip sits at (0: its first vertex, 1: its last): a tip keeps
+    /// The end of its crack's polyline a tip sits at (0: its first vertex, 1: its last): a tip keeps
     /// it while the crack grows and when the other tip stops.
     std::size_t end_of(const global::Tip &tip) { return tip.vertex == 0 ? 0 : 1; }
+
+    /// A tip's track: 2 c + its end, c the crack's index in the scene's order.
+    std::size_t track_of(std::size_t crack, const global::Tip &tip) { return 2 * crack + end_of(tip); }
 
     BoxSettings box_settings(const GlobalLocalSettings &s)
     {
@@ -169,7 +172,7 @@ namespace pumpd::coupling
       return b;
     }
 
-    /// What the cycle keeps for one end of the crack: the box that follows its tip, the
+    /// What the cycle keeps for one end of a crack: the box that follows its tip, the
     /// controller of its exchanges, its box's horizon, and whether the tip has stopped.
     struct TipTrack
     {
@@ -193,7 +196,7 @@ namespace pumpd::coupling
     /// decision on it; the PD body and its last state where the tip leads a box.
     struct TipExchange
     {
-      std::size_t                   end = 1;
+      std::size_t                   track = 1; ///< 2 crack + end
       TipState                      tip;
       ExchangeRecord                record;
       geometry::Polyline            increment; ///< from the tip
@@ -239,8 +242,9 @@ namespace pumpd::coupling
       /// accepted increments into the crack; "" or why the run stops (branching, no growth, every
       /// tip stopped at a hole or the outline).
       std::string grow(std::vector<TipExchange> &parts);
-      /// The increment of one tip into the crack, cut where it arrives; "" or why the tip stops.
-      std::string grow_tip(std::size_t end, const geometry::Polyline &path);
+      /// The increment of one tip into its crack, cut where it arrives at a hole, the outline or
+      /// another crack's face (it joins it there); "" or why the tip stops.
+      std::string grow_tip(std::size_t track, const geometry::Polyline &path);
       /// True if the ligament ahead of the tip (to the outline or a hole, along its direction) is
       /// narrower than Clearance over horizon of the finest box: no PD box resolves it.
       bool ligament_unresolved(const TipState &tip) const;
@@ -249,6 +253,13 @@ namespace pumpd::coupling
       void grow_by_lefm(TipExchange &part);
       /// The files for people and the checkpoint; a progress line per tip.
       void write(std::size_t n, const std::vector<TipExchange> &parts, const std::string &stop);
+      /// Where a path first crosses a crack other than `own`: that crack, the path's segment, the point.
+      struct Crossing
+      {
+        std::size_t     crack = 0, segment = 0;
+        geometry::Point at;
+      };
+      std::optional<Crossing> first_crossing(const geometry::Polyline &path, std::size_t own) const;
       /// The result: path, boxes, distances from the reference path; the summary metrics.
       GlobalLocalResult finish();
 
@@ -257,21 +268,25 @@ namespace pumpd::coupling
       {
         return arrive(path, scene.body, s.growth.hole_margin, horizon, 0, horizon);
       }
-      /// The index in crack->tips() of the tip at this end.
-      std::size_t tip_index(std::size_t end) const;
-      geometry::Point end_vertex(std::size_t end) const
+      /// The index in its crack's tips() of the tip of this track.
+      std::size_t tip_index(std::size_t track) const;
+      geometry::Point end_vertex(std::size_t track) const
       {
-        return end == 0 ? crack->vertices().front() : crack->vertices().back();
+        const auto &v = cracks[track / 2].vertices();
+        return track % 2 == 0 ? v.front() : v.back();
       }
+      /// The cracks' total length [m].
+      double crack_length() const;
+      std::vector<geometry::Polyline> polylines() const;
 
       const Scene                    &scene;
       const GlobalLocalSettings      &s;
       std::ostream                   &out;
       const double                    h, max_length;
       const local::MaterialParameters material;
-      std::optional<global::Crack>    crack;
+      std::vector<global::Crack>      cracks;
       GlobalProblem                   global;
-      std::vector<TipTrack>           tracks; ///< per end of the crack
+      std::vector<TipTrack>           tracks; ///< per end of each crack: 2 crack + end
       Recorder                        recorder;
       std::string                     checkpoint;
       CycleState                      state;
@@ -282,11 +297,21 @@ namespace pumpd::coupling
       Clock::time_point               t0 = Clock::now();
     };
 
-    /// The scene's crack (one polyline; an edge crack has one tip, an interior crack two).
-    global::Crack the_crack(const Scene &scene)
+    double crack_tolerance(const Scene &scene)
     {
       const auto &box = scene.body.bounding_box();
-      return global::Crack(scene.crack(), scene.body, 1e-8 * std::max(box.width(), box.height()));
+      return 1e-8 * std::max(box.width(), box.height());
+    }
+
+    /// The scene's cracks (an edge crack has one tip, an interior crack two).
+    std::vector<global::Crack> the_cracks(const std::vector<geometry::Polyline> &polylines, const Scene &scene)
+    {
+      if (polylines.empty())
+        throw InvalidParameter("Initial cracks", "none", "the global-local cycle grows a crack: give one");
+      std::vector<global::Crack> cracks;
+      for (const auto &p : polylines)
+        cracks.emplace_back(p, scene.body, crack_tolerance(scene));
+      return cracks;
     }
 
     Cycle::Cycle(const Scene &sc, const GlobalLocalSettings &settings, std::ostream &progress)
@@ -296,9 +321,9 @@ namespace pumpd::coupling
       , h(settings.pd.spacing())
       , max_length(settings.growth.length_limit())
       , material(settings.pd.material(sc.material))
-      , crack(the_crack(sc))
+      , cracks(the_cracks(sc.cracks, sc))
       , global(sc, settings.global)
-      , tracks(2, TipTrack(sc, settings))
+      , tracks(2 * sc.cracks.size(), TipTrack(sc, settings))
       , recorder(sc, settings.cycle.resume)
       , checkpoint(recorder.writes() ? recorder.path("checkpoint.h5") : "")
     {
@@ -306,19 +331,29 @@ namespace pumpd::coupling
         throw InvalidParameter("Minimum advance", std::to_string(s.cycle.exchange.min_advance),
                                "must be at least two PD spacings (" + std::to_string(2. * h) +
                                  " m): a shorter advance is within the noise of the extracted tip");
-      if (const auto &tips = crack->tips(); tips.size() == 2 && norm(tips[0].position - tips[1].position) < s.pd.horizon)
-        throw InvalidParameter("Initial cracks", to_text(crack->vertices()),
-                               "its two tips lie within one horizon (" + pumpd::to_text(s.pd.horizon, 3) +
-                                 " m) of each other: PD cannot resolve a crack shorter than its horizon; give an "
-                                 "interior crack at least a horizon long");
+      std::vector<Point> tips;
+      for (const auto &c : cracks)
+        for (const auto &t : c.tips())
+          tips.push_back(t.position);
+      for (std::size_t i = 0; i < tips.size(); ++i)
+        for (std::size_t j = i + 1; j < tips.size(); ++j)
+          if (norm(tips[i] - tips[j]) < s.pd.horizon)
+            throw InvalidParameter("Initial cracks", to_text(tips[i]) + " and " + to_text(tips[j]),
+                                   "two tips lie within one horizon (" + pumpd::to_text(s.pd.horizon, 3) +
+                                     " m) of each other: PD cannot resolve them apart; give cracks whose tips are at "
+                                     "least a horizon apart");
       if (s.cycle.resume)
         {
           if (checkpoint.empty())
             throw InvalidParameter("Resume", "true", "needs an output directory holding checkpoint.h5");
           state = read_cycle_checkpoint(checkpoint);
-          crack.emplace(state.crack, scene.body, 1e-8 * std::max(scene.body.bounding_box().width(), scene.body.bounding_box().height()));
+          if (state.cracks.size() != cracks.size())
+            throw InvalidParameter("Resume", "true",
+                                   "the checkpoint holds " + std::to_string(state.cracks.size()) +
+                                     " cracks, the scene " + std::to_string(cracks.size()));
+          cracks = the_cracks(state.cracks, scene);
           global.restore(state.refinements);
-          for (std::size_t e = 0; e < 2; ++e)
+          for (std::size_t e = 0; e < tracks.size(); ++e)
             {
               const auto &saved = state.ends[e];
               tracks[e].halvings = saved.halvings;
@@ -326,13 +361,13 @@ namespace pumpd::coupling
               tracks[e].boxes.restore(saved.boxes, tracks[e].length_scale());
               tracks[e].controller.restore(saved.load_factor);
             }
-          out << "resuming after exchange " << state.exchanges << ": crack " << crack->length() << " m\n";
+          out << "resuming after exchange " << state.exchanges << ": cracks " << crack_length() << " m\n";
         }
       steps   = recorder.table("load_steps.csv", load_steps_header);
-      length0 = crack->length();
-      out << "global-local: " << scene.mesh_file << ", " << scene.body.holes().size() << " holes, initial crack "
-          << crack->length() << " m with " << crack->tips().size() << (crack->tips().size() == 1 ? " tip" : " tips")
-          << "; PD delta " << s.pd.horizon << " m, m = " << s.pd.horizon_over_spacing << ", box " << s.cycle.box.size
+      length0 = crack_length();
+      out << "global-local: " << scene.mesh_file << ", " << scene.body.holes().size() << " holes, "
+          << cracks.size() << (cracks.size() == 1 ? " crack " : " cracks ") << crack_length() << " m with "
+          << tips.size() << (tips.size() == 1 ? " tip" : " tips") << "; PD delta " << s.pd.horizon << " m, m = " << s.pd.horizon_over_spacing << ", box " << s.cycle.box.size
           << " m; K_c = " << scene.material.critical_sif() << " Pa m^1/2\n";
     }
 
@@ -375,7 +410,7 @@ namespace pumpd::coupling
     {
       if (n >= s.cycle.max_exchanges)
         return "maximum exchanges";
-      if (crack->length() >= max_length - 1e-9)
+      if (crack_length() >= max_length - 1e-9)
         return "maximum crack length";
       return "";
     }
@@ -385,7 +420,8 @@ namespace pumpd::coupling
       if (result.stop_reason.empty() && state.finished) // resumed from the checkpoint of a run that had stopped
         result.stop_reason = "nothing to resume: the checkpointed run had already stopped after exchange " +
                              std::to_string(state.exchanges) + " (its reason: the last row of load_steps.csv)";
-      result.path = crack->vertices();
+      result.path  = cracks.front().vertices();
+      result.paths = polylines();
       for (const auto &track : tracks)
         result.boxes.insert(result.boxes.end(), track.boxes.history().begin(), track.boxes.history().end());
       result.seconds = seconds_since(t0);
@@ -401,39 +437,59 @@ namespace pumpd::coupling
       return result;
     }
 
-    std::size_t Cycle::tip_index(std::size_t end) const
+    std::size_t Cycle::tip_index(std::size_t track) const
     {
-      const auto &tips = crack->tips();
+      const auto &tips = cracks[track / 2].tips();
       for (std::size_t t = 0; t < tips.size(); ++t)
-        if (end_of(tips[t]) == end)
+        if (end_of(tips[t]) == track % 2)
           return t;
       throw std::logic_error("no tip at this end of the crack");
+    }
+
+    double Cycle::crack_length() const
+    {
+      double length = 0.;
+      for (const auto &c : cracks)
+        length += c.length();
+      return length;
+    }
+
+    std::vector<geometry::Polyline> Cycle::polylines() const
+    {
+      std::vector<geometry::Polyline> p;
+      for (const auto &c : cracks)
+        p.push_back(c.vertices());
+      return p;
     }
 
     std::string Cycle::solve_global(std::size_t n, std::vector<TipExchange> &parts)
     {
       const auto   t      = Clock::now();
-      const auto   states = global.solve(*crack);
+      const auto   states = global.solve(cracks);
       const double solved = seconds_since(t);
-      double       first  = std::numeric_limits<double>::infinity();
+      std::vector<std::size_t> track; // of each state: the cracks' tips in order
+      for (std::size_t c = 0; c < cracks.size(); ++c)
+        for (const auto &tip : cracks[c].tips())
+          track.push_back(track_of(c, tip));
+      double first = std::numeric_limits<double>::infinity();
       for (std::size_t k = 0; k < states.size(); ++k)
-        if (!tracks[end_of(crack->tips()[k])].stopped)
+        if (!tracks[track[k]].stopped)
           first = std::min(first, states[k].critical_load_factor);
       if (!std::isfinite(first))
         return "the crack closes under the load (K_I <= 0)";
       // G scales with lambda^2: at lambda = first a tip has G / G_c = (first / lambda_c)^2.
       for (std::size_t k = 0; k < states.size(); ++k)
         {
-          const std::size_t end = end_of(crack->tips()[k]);
-          const double      g   = std::pow(first / states[k].critical_load_factor, 2);
-          if (tracks[end].stopped || g < s.cycle.box_threshold)
+          const double g = std::pow(first / states[k].critical_load_factor, 2);
+          if (tracks[track[k]].stopped || g < s.cycle.box_threshold)
             continue;
           TipExchange part;
-          part.end                           = end;
+          part.track                         = track[k];
           part.tip                           = states[k];
           part.record.exchange               = n;
-          part.record.tip_end                = end;
-          part.record.crack_length           = crack->length();
+          part.record.crack                  = track[k] / 2;
+          part.record.tip_end                = track[k] % 2;
+          part.record.crack_length           = crack_length();
           part.record.tip                    = part.tip.position;
           part.record.critical_load_factor   = part.tip.critical_load_factor;
           part.record.dofs                   = global.n_dofs();
@@ -447,7 +503,7 @@ namespace pumpd::coupling
 
     void Cycle::resolve(TipExchange &part)
     {
-      auto        &track     = tracks[part.end];
+      auto        &track     = tracks[part.track];
       const double reach     = s.cycle.exchange.max_advance + s.pd.horizon;
       const double clearance = std::min(clearance_ahead(scene.body, part.tip.position, part.tip.direction, reach, 0.5 * h),
                                         track.boxes.smallest_hole_within_reach(part.tip.position, part.tip.direction));
@@ -462,8 +518,8 @@ namespace pumpd::coupling
       for (std::size_t k = 0; k < parts.size(); ++k)
         {
           const auto near = [&](std::size_t m) {
-            const double side = s.cycle.box.size * std::min(tracks[parts[k].end].length_scale(),
-                                                              tracks[parts[m].end].length_scale());
+            const double side = s.cycle.box.size * std::min(tracks[parts[k].track].length_scale(),
+                                                              tracks[parts[m].track].length_scale());
             return norm(parts[k].tip.position - parts[m].tip.position) < 0.5 * side;
           };
           auto shared = boxes.end();
@@ -489,11 +545,11 @@ namespace pumpd::coupling
       TipExchange &lead = parts[box.front()];
       unsigned int finest = 0;
       for (std::size_t m : box)
-        finest = std::max(finest, tracks[parts[m].end].halvings);
+        finest = std::max(finest, tracks[parts[m].track].halvings);
       std::vector<Point> tips, directions;
       for (std::size_t m : box)
         {
-          auto &track         = tracks[parts[m].end];
+          auto &track         = tracks[parts[m].track];
           track.halvings      = finest;
           track.pd.horizon    = track.length_scale() * s.pd.horizon;
           parts[m].record.horizon = track.pd.horizon;
@@ -501,10 +557,10 @@ namespace pumpd::coupling
           tips.push_back(parts[m].tip.position);
           directions.push_back(parts[m].tip.direction);
         }
-      auto &track     = tracks[lead.end];
+      auto &track     = tracks[lead.track];
       lead.record.box = track.boxes.place(tips, directions, track.length_scale());
       lead.model.emplace(material, track.pd.horizon, track.pd.horizon_over_spacing,
-                         local::Region{scene.body, lead.record.box, {crack->vertices()}});
+                         local::Region{scene.body, lead.record.box, polylines()});
       for (std::size_t m : box)
         {
           parts[m].record.box      = lead.record.box;
@@ -527,7 +583,7 @@ namespace pumpd::coupling
                          std::vector<TipExchange> &parts)
     {
       TipExchange          &lead  = parts[box.front()];
-      auto                 &track = tracks[lead.end];
+      auto                 &track = tracks[lead.track];
       const double          scale = track.length_scale();
       std::vector<TipState> tips;
       std::vector<double>   allowed;
@@ -592,7 +648,7 @@ namespace pumpd::coupling
                  << " lambda_c";
           return reason.str();
         }
-      std::vector<std::string> reasons(2);
+      std::vector<std::string> reasons(tracks.size());
       for (auto &part : parts)
         {
           part.grows = grew(part) && part.record.lambda <=
@@ -602,17 +658,17 @@ namespace pumpd::coupling
               part.record.decision = "waits";
               continue;
             }
-          const double before = crack->length();
+          const double before = crack_length();
           const auto  &path   = part.increment;
-          const auto   reason = grow_tip(part.end, path);
-          part.record.advance = crack->length() - before;
+          const auto   reason = grow_tip(part.track, path);
+          part.record.advance = crack_length() - before;
           if (path.size() > 1)
             part.record.kink = std::atan2(geometry::cross(part.tip.direction, path[1] - path[0]),
                                           geometry::dot(part.tip.direction, path[1] - path[0]));
           if (!reason.empty())
             {
-              tracks[part.end].stopped = true;
-              reasons[part.end] =
+              tracks[part.track].stopped = true;
+              reasons[part.track] =
                 !part.by_lefm ? reason :
                              reason + " (the last ligament, narrower than " +
                                pumpd::to_text(s.cycle.resolution.clearance_over_horizon, 3) +
@@ -620,9 +676,10 @@ namespace pumpd::coupling
             }
         }
       global.scale_to(lambda);
-      for (const auto &tip : crack->tips())
-        if (!tracks[end_of(tip)].stopped)
-          return "";
+      for (std::size_t c = 0; c < cracks.size(); ++c)
+        for (const auto &tip : cracks[c].tips())
+          if (!tracks[track_of(c, tip)].stopped)
+            return "";
       std::string stop;
       for (const auto &reason : reasons)
         if (!reason.empty())
@@ -630,13 +687,53 @@ namespace pumpd::coupling
       return stop;
     }
 
-    std::string Cycle::grow_tip(std::size_t end, const geometry::Polyline &path)
+    std::string Cycle::grow_tip(std::size_t track, const geometry::Polyline &path)
     {
-      const auto arrival = arrival_of(path, tracks[end].pd.horizon);
-      for (std::size_t k = 1; k < arrival.path.size(); ++k)
-        if (geometry::norm(arrival.path[k] - end_vertex(end)) > 1e-3 * h)
-          crack->grow(tip_index(end), arrival.path[k]);
-      return arrival.reason;
+      const double horizon = tracks[track].pd.horizon;
+      auto         arrival = arrival_of(path, horizon);
+      // Another crack's face met by the increment, or by its last segment continued within a
+      // horizon (a ligament PD does not resolve, as at a hole): the tip joins that crack there.
+      auto        ahead = arrival.path;
+      if (arrival.reason.empty() && ahead.size() > 1)
+        ahead.push_back(ahead.back() + horizon / geometry::norm(ahead.back() - ahead[ahead.size() - 2]) *
+                                         (ahead.back() - ahead[ahead.size() - 2]));
+      const auto face = first_crossing(ahead, track / 2);
+      auto      &crack = cracks[track / 2];
+      for (std::size_t k = 1; k < arrival.path.size() && (!face || k <= face->segment); ++k)
+        if (geometry::norm(arrival.path[k] - end_vertex(track)) > 1e-3 * h)
+          crack.grow(tip_index(track), arrival.path[k]);
+      if (!face)
+        return arrival.reason;
+      crack.join(tip_index(track), face->at);
+      return "joined crack " + std::to_string(face->crack + 1) + " at " + to_text(face->at);
+    }
+
+    std::optional<Cycle::Crossing> Cycle::first_crossing(const geometry::Polyline &path, std::size_t own) const
+    {
+      std::optional<Crossing> first;
+      double                  nearest = std::numeric_limits<double>::infinity();
+      for (std::size_t k = 0; k + 1 < path.size() && !first; ++k)
+        for (std::size_t c = 0; c < cracks.size(); ++c)
+          {
+            if (c == own)
+              continue;
+            const auto &v = cracks[c].vertices();
+            for (std::size_t j = 0; j + 1 < v.size(); ++j)
+              {
+                // p + t r = q + u w, t, u in [0, 1]
+                const Point  p = path[k], r = path[k + 1] - path[k], q = v[j], w = v[j + 1] - v[j];
+                const double d = geometry::cross(r, w);
+                if (d == 0.)
+                  continue;
+                const double t = geometry::cross(q - p, w) / d, u = geometry::cross(q - p, r) / d;
+                if (t >= 0. && t <= 1. && u >= 0. && u <= 1. && t * geometry::norm(r) < nearest)
+                  {
+                    nearest = t * geometry::norm(r);
+                    first   = Crossing{c, k, p + t * r};
+                  }
+              }
+          }
+      return first;
     }
 
     bool Cycle::ligament_unresolved(const TipState &tip) const
@@ -654,7 +751,7 @@ namespace pumpd::coupling
       const double angle = kink_angle(tip.k1, tip.k2);
       const Point  n{-tip.direction.y, tip.direction.x};
       const Point  e = std::cos(angle) * tip.direction + std::sin(angle) * n;
-      part.increment = {tip.position, tip.position + tracks[part.end].pd.horizon * e};
+      part.increment = {tip.position, tip.position + tracks[part.track].pd.horizon * e};
       part.decision  = Decision::accept;
       part.by_lefm   = true;
       auto &record                = part.record;
@@ -667,7 +764,7 @@ namespace pumpd::coupling
 
     void Cycle::write(std::size_t n, const std::vector<TipExchange> &parts, const std::string &stop)
     {
-      const bool last = !stop.empty() || n + 1 >= s.cycle.max_exchanges || crack->length() >= max_length - 1e-9;
+      const bool last = !stop.empty() || n + 1 >= s.cycle.max_exchanges || crack_length() >= max_length - 1e-9;
       for (const auto &part : parts)
         {
           result.exchanges.push_back(part.record);
@@ -677,7 +774,7 @@ namespace pumpd::coupling
         if (part.grows)
           {
             recorder.load_displacement(n, part.record.lambda, part.record.load, part.record.displacement,
-                                       crack->length(), crack->vertices().back());
+                                       crack_length(), cracks.front().vertices().back());
             break;
           }
       if (n % s.cycle.output_interval == 0 || last)
@@ -687,14 +784,15 @@ namespace pumpd::coupling
             if (part.model)
               recorder.pd_state(*part.model, part.state);
         }
-      recorder.crack_path(crack->vertices());
+      recorder.crack_paths(polylines());
       if (recorder.writes())
         {
-          CsvFile boxes_table(recorder.path("boxes.csv"), "exchange,x_min_m,y_min_m,x_max_m,y_max_m,moved,tip_end");
+          CsvFile boxes_table(recorder.path("boxes.csv"), "exchange,x_min_m,y_min_m,x_max_m,y_max_m,moved,tip_end,crack");
           state.exchanges = n + 1;
           state.finished  = !stop.empty();
-          state.crack     = crack->vertices();
-          for (std::size_t e = 0; e < 2; ++e)
+          state.cracks    = polylines();
+          state.ends.resize(tracks.size());
+          for (std::size_t e = 0; e < tracks.size(); ++e)
             {
               write_boxes(boxes_table, tracks[e].boxes.history(), e);
               state.ends[e] = {tracks[e].boxes.history(), tracks[e].controller.load_factor(), tracks[e].halvings,
@@ -706,31 +804,36 @@ namespace pumpd::coupling
 
       // ETA: the growth rate so far against what is left to grow (to the length limit, or to the
       // boundary ahead of the tip that has farthest to go).
-      const double grown = crack->length() - length0;
+      const double grown = crack_length() - length0;
       double       ahead = 0.;
-      for (const auto &tip : crack->tips())
-        if (!tracks[end_of(tip)].stopped)
-          ahead = std::max(ahead, scene.body.ray_to_outline(tip.position, tip.direction));
-      ahead            = std::min(max_length - crack->length(), ahead);
+      for (std::size_t c = 0; c < cracks.size(); ++c)
+        for (const auto &tip : cracks[c].tips())
+          if (!tracks[track_of(c, tip)].stopped)
+            ahead = std::max(ahead, scene.body.ray_to_outline(tip.position, tip.direction));
+      ahead            = std::min(max_length - crack_length(), ahead);
       const double eta = grown > 0. ? seconds_since(t0) / grown * ahead : 0.;
       for (const auto &part : parts)
         {
           const auto &record = part.record;
           const auto &box    = record.box;
-          out << "exchange " << std::setw(3) << n << (parts.size() > 1 ? (part.end == 0 ? " tip 0" : " tip 1") : "")
-              << "  lambda " << std::setprecision(4) << record.lambda << " (" << record.load_factor
-              << " lambda_c)  crack " << crack->length() << " m  +" << 1e3 * record.advance << " mm  tip "
-              << to_text(end_vertex(part.end)) << "  ";
+          out << "exchange " << std::setw(3) << n;
+          if (tracks.size() > 2)
+            out << " crack " << part.track / 2 + 1;
+          if (parts.size() > 1)
+            out << " tip " << part.track % 2;
+          out << "  lambda " << std::setprecision(4) << record.lambda << " (" << record.load_factor
+              << " lambda_c)  crack " << crack_length() << " m  +" << 1e3 * record.advance << " mm  tip "
+              << to_text(end_vertex(part.track)) << "  ";
           if (part.model)
             out << "box [" << box.x_min << ", " << box.x_max << "] x [" << box.y_min << ", " << box.y_max << "]"
-                << (tracks[part.end].boxes.moved() ? " new" : "") << "  delta " << 1e3 * record.horizon << " mm, "
+                << (tracks[part.track].boxes.moved() ? " new" : "") << "  delta " << 1e3 * record.horizon << " mm, "
                 << record.pd_nodes << " PD nodes, " << record.substeps << " states, " << record.pd_iterations
                 << " DR its";
           else if (part.by_lefm)
             out << "LEFM increment (ligament below " << s.cycle.resolution.clearance_over_horizon
                 << " horizons of the finest box)";
           else
-            out << "in the box of tip " << parts[part.box].end;
+            out << "in the box of tip " << parts[part.box].track % 2;
           if (!part.grows && part.decision != Decision::too_small)
             out << "  waits: grew above this exchange's load";
           out << "  ETA <= " << std::fixed << std::setprecision(0) << eta << " s" << std::defaultfloat

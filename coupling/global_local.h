@@ -15,13 +15,15 @@
 //     horizons of the finest box is resolved by no box: the tip grows through it by LEFM instead
 //     of 2-3;
 //  5. the recorder writes what people look at, and the checkpoint.
-// The crack is one polyline with one tip (an edge crack) or two (an interior crack). Each tip has
-// its own box, controller and horizon; steps 2-3 run per box. Tips within half a box side of
-// each other share one box (they grow in the same PD states, at one load). A tip gets a box when its G / G_c
-// is at least `Box threshold` at the load where the first tip reaches G = G_c; the others wait.
+// The cracks are polylines, each with one tip (an edge crack) or two (an interior crack). Each
+// tip has its own box, controller and horizon; steps 2-3 run per box, every crack broken bonds in
+// every box. Tips within half a box side of each other share one box (they grow in the same PD
+// states, at one load). A tip gets a box when its G / G_c is at least `Box threshold` at the load
+// where the first tip reaches G = G_c; the others wait.
 // The exchange's load is the lowest at which a tip grew; a tip that grew within one load
 // increment of its own ladder above it grows too (its states cannot tell the two loads apart),
-// the increment of any other is discarded and computed again at the next exchange.
+// the increment of any other is discarded and computed again at the next exchange. A tip whose
+// increment meets another crack's face, or would within a horizon, joins that crack there.
 #pragma once
 
 #include <cstddef>
@@ -70,6 +72,7 @@ namespace pumpd::coupling
   struct ExchangeRecord
   {
     std::size_t     exchange = 0;
+    std::size_t     crack    = 0; ///< the tip's crack, in the scene's order
     std::size_t     tip_end  = 1; ///< the end of the crack polyline the tip sits at: 0 first vertex, 1 last
     double          lambda               = 0.; ///< the scene's load factor of the accepted state
     double          load_factor          = 0.; ///< lambda / lambda_c
@@ -90,7 +93,8 @@ namespace pumpd::coupling
 
   struct GlobalLocalResult
   {
-    geometry::Polyline          path;
+    geometry::Polyline              path;  ///< the first crack
+    std::vector<geometry::Polyline> paths; ///< every crack, in the scene's order
     std::vector<ExchangeRecord> exchanges;
     std::vector<geometry::Box>  boxes;
     std::string                 stop_reason;
