@@ -118,14 +118,22 @@ namespace pumpd::coupling
 
   std::vector<TipState> GlobalProblem::solve(const global::Crack &crack)
   {
+    return solve(std::vector<global::Crack>{crack});
+  }
+
+  std::vector<TipState> GlobalProblem::solve(const std::vector<global::Crack> &cracks)
+  {
     std::vector<geometry::Point> tips;
-    for (const auto &t : crack.tips())
-      {
-        history.push_back({t.position, settings.refinement_levels});
-        tips.push_back(t.position);
-      }
+    std::vector<global::Tip>     frames;
+    for (const auto &crack : cracks)
+      for (const auto &t : crack.tips())
+        {
+          history.push_back({t.position, settings.refinement_levels});
+          tips.push_back(t.position);
+          frames.push_back(t);
+        }
     mesh_for(tips);
-    problem->set_crack(crack);
+    problem->set_cracks(cracks);
     solve_current();
 
     std::vector<TipState> states;
@@ -133,8 +141,8 @@ namespace pumpd::coupling
     for (std::size_t t = 0; t < sifs.size(); ++t)
       {
         TipState s;
-        s.position  = crack.tips()[t].position;
-        s.direction = crack.tips()[t].direction;
+        s.position  = frames[t].position;
+        s.direction = frames[t].direction;
         s.k1        = sifs[t].k1 / lambda;
         s.k2        = sifs[t].k2 / lambda;
         const double g = (sifs[t].k1 * sifs[t].k1 + sifs[t].k2 * sifs[t].k2) / scene.material.effective_modulus();

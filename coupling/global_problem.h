@@ -67,6 +67,9 @@ namespace pumpd::coupling
     /// the earlier tips within the refinement trail of a tip), sets up the enrichment and solves
     /// at lambda_ref: the state of every tip (in the crack's tip order).
     std::vector<TipState> solve(const global::Crack &crack);
+    /// The same for several cracks: refined around every tip of every crack, each crack enriched on
+    /// its own; the states of every tip, cracks in order, tips in each crack's order.
+    std::vector<TipState> solve(const std::vector<global::Crack> &cracks);
     /// Solves the body without a crack at lambda_ref, on the scene's mesh.
     void solve_uncracked();
     /// The refinements solve() made, in order.

@@ -8,8 +8,8 @@ namespace pumpd::coupling
   {
     prm.enter_subsection("Crack growth");
     prm.add_parameter("Maximum crack length", max_crack_length,
-                      "Stop when the crack polyline is this long [m]; 0: no limit (the crack grows until it reaches "
-                      "a hole or the outline, or stops).",
+                      "Stop when the crack polyline is this long [m] (several cracks: their total length); 0: no "
+                      "limit (the crack grows until it reaches a hole or the outline, or stops).",
                       dealii::Patterns::Double(0.));
     prm.add_parameter("Hole margin", hole_margin,
                       "A tip that would enter a hole stops this far [m] from it.", dealii::Patterns::Double(0., 1.));

@@ -32,32 +32,66 @@ namespace pumpd::coupling
     prm.add_parameter("Maximum steps", max_steps, "Growth increments at most.", Patterns::Integer(1));
     prm.add_parameter("Output interval", output_interval, "Write global_NNN.vtu every n steps (and the last).",
                       Patterns::Integer(1));
+    prm.add_parameter("Simultaneous growth tolerance", simultaneous_tolerance,
+                      "Several tips: the step's load factor is the smallest critical load factor lambda_c of the "
+                      "growing tips, and every tip whose lambda_c is within this relative tolerance of it grows; the "
+                      "others wait.",
+                      Patterns::Double(0., 1.));
     prm.leave_subsection();
   }
 
   namespace
   {
     constexpr double pi = 3.14159265358979323846;
-    /// A tip that would end within (look_ahead - 1) da of the outline or a hole's margin goes
-    /// there in this step: no sliver of material (and no tiny cell cut) is left in front of it.
+    /// A tip that would end within (look_ahead - 1) da of the outline, a hole's margin or another
+    /// crack goes there in this step: no sliver of material (and no tiny cell cut) is left in front.
     constexpr double look_ahead = 1.5;
 
     /// What happens to one tip in one step.
     struct Growth
     {
-      std::size_t tip = 0;
+      std::size_t crack = 0;    ///< index of the crack
+      std::size_t tip   = 0;    ///< index of the tip in its crack
+      std::size_t flat  = 0;    ///< index over all tips, cracks in order
       Point       to;           ///< new tip position
       double      angle = 0.;   ///< theta_c [rad]
       bool        grow  = true; ///< false: no new segment
       bool        stops = false;
+      bool        joins = false; ///< ends on another crack's face
       std::string reason;
     };
 
+    /// The first point where from + t e (t >= 0, at most t_max) meets a crack other than `skip`:
+    /// (t, crack), or (infinity, skip).
+    std::pair<double, std::size_t> ray_to_cracks(Point from, Point e, double t_max,
+                                                 const std::vector<global::Crack> &cracks, std::size_t skip)
+    {
+      std::pair<double, std::size_t> best{std::numeric_limits<double>::infinity(), skip};
+      for (std::size_t c = 0; c < cracks.size(); ++c)
+        {
+          if (c == skip)
+            continue;
+          const auto &v = cracks[c].vertices();
+          for (std::size_t k = 0; k + 1 < v.size(); ++k)
+            {
+              const Point  f   = v[k + 1] - v[k];
+              const double den = geometry::cross(e, f);
+              if (den == 0.)
+                continue;
+              const double t = geometry::cross(v[k] - from, f) / den, u = geometry::cross(v[k] - from, e) / den;
+              if (t >= 0. && t <= t_max && u >= 0. && u <= 1. && t < best.first)
+                best = {t, c};
+            }
+        }
+      return best;
+    }
+
     /// Where tip grows by the increment da / (1 + |theta_c| / halving angle), at most `remaining`:
-    /// tip + da e, e = cos(theta_c) d + sin(theta_c) n; to the outline or to a hole's margin
-    /// instead (and it stops) if that comes within look_ahead da along e; nowhere if K_I <= 0.
+    /// tip + da e, e = cos(theta_c) d + sin(theta_c) n; to the outline, a hole's margin or another
+    /// crack's face instead (and it stops or joins) if that comes within look_ahead da along e;
+    /// nowhere if K_I <= 0.
     void plan(Growth &g, const global::Tip &tip, double k1, double remaining, const geometry::Body &body,
-              const LefmGrowthSettings &s)
+              const std::vector<global::Crack> &cracks, const LefmGrowthSettings &s)
     {
       if (k1 <= 0.)
         {
@@ -74,7 +108,15 @@ namespace pumpd::coupling
       const Point  e      = std::cos(g.angle) * tip.direction + std::sin(g.angle) * n;
       const double t_out  = body.ray_to_outline(tip.position, e);
       const double t_hole = body.ray_to_holes(tip.position, e, s.growth.hole_margin).t;
-      if (t_hole <= look_ahead * da && t_hole < t_out)
+      const auto [t_face, other] = ray_to_cracks(tip.position, e, look_ahead * da, cracks, g.crack);
+      if (t_face <= look_ahead * da && t_face < t_out && t_face < t_hole)
+        {
+          g.to     = tip.position + t_face * e;
+          g.joins  = true;
+          g.stops  = true;
+          g.reason = "joined crack " + std::to_string(other + 1);
+        }
+      else if (t_hole <= look_ahead * da && t_hole < t_out)
         {
           g.grow   = t_hole > 1e-3 * da;
           g.to     = tip.position + t_hole * e;
@@ -90,14 +132,43 @@ namespace pumpd::coupling
       else
         g.to = tip.position + da * e;
     }
+
+    double total_length(const std::vector<global::Crack> &cracks)
+    {
+      double length = 0.;
+      for (const auto &c : cracks)
+        length += c.length();
+      return length;
+    }
+
+    /// Refuses initial cracks with a tip within the tip enrichment radius of another crack: the
+    /// interaction integral's domain would hold that crack (EnrichedElasticity caps it there).
+    void check_clearance(const std::vector<global::Crack> &cracks, double tip_radius)
+    {
+      for (std::size_t c = 0; c < cracks.size(); ++c)
+        for (const auto &tip : cracks[c].tips())
+          for (std::size_t o = 0; o < cracks.size(); ++o)
+            if (o != c && cracks[o].distance(tip.position) < tip_radius)
+              throw InvalidParameter("Initial cracks",
+                                     to_text(cracks[c].vertices()) + " | " + to_text(cracks[o].vertices()),
+                                     "the tip at " + to_text(tip.position) + " lies " +
+                                       to_text(cracks[o].distance(tip.position)) +
+                                       " m from another crack, within the tip enrichment radius (Global / Tip "
+                                       "enrichment radius = " +
+                                       to_text(tip_radius) + " m): move the cracks apart or use a smaller radius");
+    }
   } // namespace
 
   LefmGrowthResult run_lefm_growth(const Scene &scene, const LefmGrowthSettings &s, std::ostream &out)
   {
-    const auto                   t0  = std::chrono::steady_clock::now();
-    const auto                  &box = scene.body.bounding_box();
-    std::optional<global::Crack> crack;
-    crack.emplace(scene.crack(), scene.body, 1e-8 * std::max(box.width(), box.height()));
+    const auto                 t0  = std::chrono::steady_clock::now();
+    const auto                &box = scene.body.bounding_box();
+    std::vector<global::Crack> cracks;
+    if (scene.cracks.empty())
+      scene.crack(); // names "Initial cracks"
+    for (const auto &line : scene.cracks)
+      cracks.emplace_back(line, scene.body, 1e-8 * std::max(box.width(), box.height()));
+    check_clearance(cracks, s.global.tip_radius);
     GlobalProblem global(scene, s.global);
     Recorder      recorder(scene);
     CsvFile       table = recorder.table("load_steps.csv", "step,tip,x_m,y_m,crack_length_m,K_I_Pa_sqrt_m,K_II_Pa_sqrt_m,"
@@ -105,41 +176,56 @@ namespace pumpd::coupling
                                                      "solve_seconds,step_seconds");
     const double  max_length = s.growth.length_limit();
     out << "LEFM growth: " << scene.mesh_file << ", " << scene.mesh->n_active_cells() << " cells, "
-        << scene.body.holes().size() << " holes, initial crack " << crack->length() << " m, da = "
-        << s.lefm.growth_increment << " m, up to " << s.lefm.max_steps << " steps\n";
+        << scene.body.holes().size() << " holes, ";
+    if (cracks.size() == 1)
+      out << "initial crack " << cracks.front().length() << " m";
+    else
+      out << cracks.size() << " initial cracks, " << total_length(cracks) << " m";
+    out << ", da = " << s.lefm.growth_increment << " m, up to " << s.lefm.max_steps << " steps\n";
 
     LefmGrowthResult result;
-    bool             stopped[2] = {false, false}; // [1]: the tip at the first vertex, [0]: at the last
+    // stopped[c][1]: the tip at the first vertex of crack c, [c][0]: at its last.
+    std::vector<std::array<bool, 2>> stopped(cracks.size(), {{false, false}});
+    const auto is_stopped = [&](std::size_t c, const global::Tip &tip) { return stopped[c][tip.vertex == 0]; };
+    bool       joined     = false;
     for (std::size_t step = 0;; ++step)
       {
         const auto t_step = std::chrono::steady_clock::now();
-        const auto tips   = global.solve(*crack);
+        const auto tips   = global.solve(cracks);
         const auto solve_seconds =
           std::chrono::duration<double>(std::chrono::steady_clock::now() - t_step).count();
 
-        // Decide every tip from this solution.
-        const double        length    = crack->length();
+        // Decide every tip from this solution: the load factor is the smallest lambda_c of the
+        // tips still growing; those within the tolerance of it grow, the others wait.
+        const double        length    = total_length(cracks);
         const double        remaining = max_length - length;
         const bool          at_limit  = step == s.lefm.max_steps || remaining <= 1e-6 * s.lefm.growth_increment;
         std::vector<Growth> growth;
         double              lambda_c = std::numeric_limits<double>::infinity();
-        for (std::size_t t = 0; t < tips.size(); ++t)
+        for (std::size_t c = 0, flat = 0; c < cracks.size(); ++c)
+          for (std::size_t t = 0; t < cracks[c].tips().size(); ++t, ++flat)
+            {
+              Growth g;
+              g.crack = c;
+              g.tip   = t;
+              g.flat  = flat;
+              g.to    = cracks[c].tips()[t].position;
+              g.angle = kink_angle(tips[flat].k1, tips[flat].k2);
+              if (!is_stopped(c, cracks[c].tips()[t]))
+                lambda_c = std::min(lambda_c, tips[flat].critical_load_factor);
+              growth.push_back(g);
+            }
+        for (auto &g : growth)
           {
-            const auto &tip = crack->tips()[t];
-            Growth      g;
-            g.tip   = t;
-            g.to    = tip.position;
-            g.angle = kink_angle(tips[t].k1, tips[t].k2);
-            if (at_limit || stopped[tip.vertex == 0])
+            const auto &tip = cracks[g.crack].tips()[g.tip];
+            if (at_limit || is_stopped(g.crack, tip) ||
+                tips[g.flat].critical_load_factor > lambda_c * (1. + s.lefm.simultaneous_tolerance))
               g.grow = false;
             else
-              plan(g, tip, tips[t].k1, remaining, scene.body, s);
-            if (!stopped[tip.vertex == 0])
-              lambda_c = std::min(lambda_c, tips[t].critical_load_factor);
-            growth.push_back(g);
+              plan(g, tip, tips[g.flat].k1, remaining, scene.body, cracks, s);
           }
         const bool last = at_limit || std::all_of(growth.begin(), growth.end(), [&](const Growth &g) {
-                            return g.stops || stopped[crack->tips()[g.tip].vertex == 0];
+                            return g.stops || is_stopped(g.crack, cracks[g.crack].tips()[g.tip]);
                           });
 
         const double step_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_step).count();
@@ -150,9 +236,9 @@ namespace pumpd::coupling
         const double eta = last ? 0. : elapsed / double(step + 1) * steps_left;
         for (const auto &g : growth)
           {
-            const auto          &tip = tips[g.tip];
+            const auto          &tip = tips[g.flat];
             const LefmGrowthStep st{step,
-                                    g.tip,
+                                    g.flat,
                                     tip.position,
                                     length,
                                     tip.k1,
@@ -161,16 +247,17 @@ namespace pumpd::coupling
                                     g.angle,
                                     g.grow ? geometry::norm(g.to - tip.position) : 0.,
                                     global.n_dofs(),
-                                    solve_seconds};
+                                    solve_seconds,
+                                    g.crack};
             result.steps.push_back(st);
-            out << "step " << std::setw(3) << step << "/" << s.lefm.max_steps << "  tip " << g.tip << " at "
+            out << "step " << std::setw(3) << step << "/" << s.lefm.max_steps << "  tip " << g.flat << " at "
                 << to_text(st.position) << "  crack " << std::setprecision(4) << length << " m  K_I " << st.k1
                 << "  K_II " << st.k2 << "  lambda_c " << st.critical_load_factor << "  kink " << std::fixed
                 << std::setprecision(2) << st.kink_angle * 180. / pi << " deg  da " << std::defaultfloat
                 << std::setprecision(3) << st.increment << " m  dofs " << st.dofs << "  " << std::setprecision(2)
                 << step_seconds << " s  ETA " << std::fixed << std::setprecision(0) << eta << " s" << std::defaultfloat
                 << std::setprecision(6) << std::endl;
-            table.row(step, g.tip, st.position.x, st.position.y, length, st.k1, st.k2, st.critical_load_factor,
+            table.row(step, g.flat, st.position.x, st.position.y, length, st.k1, st.k2, st.critical_load_factor,
                       st.kink_angle * 180. / pi, st.increment, st.dofs, solve_seconds, step_seconds);
           }
         if (std::isfinite(lambda_c))
@@ -178,20 +265,35 @@ namespace pumpd::coupling
             global.scale_to(lambda_c);
             const auto [load, displacement] = global.report();
             recorder.load_displacement(step, lambda_c, load, displacement, length,
-                                       tips.empty() ? crack->vertices().back() : tips[0].position);
+                                       tips.empty() ? cracks.front().vertices().back() : tips[0].position);
           }
         if (step % s.lefm.output_interval == 0 || last)
           recorder.global_state(global, double(step));
 
-        // Grow from the last tip to the first: a tip that reaches the outline disappears, and the
-        // indices of the tips before it stay valid.
+        // Grow from the last tip to the first: a tip that reaches the outline or joins another
+        // crack disappears, and the indices of the tips before it stay valid. A new segment that
+        // would cross another crack (grown earlier in this step) ends on it and joins it.
         for (auto g = growth.rbegin(); g != growth.rend(); ++g)
           {
-            const bool front = crack->tips()[g->tip].vertex == 0;
+            auto      &crack = cracks[g->crack];
+            const auto tip   = crack.tips()[g->tip];
+            if (g->grow && !g->joins)
+              if (const auto [t, other] = ray_to_cracks(tip.position, g->to - tip.position, 1., cracks, g->crack);
+                  t <= 1.)
+                {
+                  g->to     = tip.position + t * (g->to - tip.position);
+                  g->joins  = true;
+                  g->stops  = true;
+                  g->reason = "joined crack " + std::to_string(other + 1);
+                }
             if (g->grow)
               try
                 {
-                  crack->grow(g->tip, g->to);
+                  if (g->joins)
+                    crack.join(g->tip, g->to);
+                  else
+                    crack.grow(g->tip, g->to);
+                  joined |= g->joins;
                 }
               catch (const InvalidParameter &e)
                 {
@@ -200,28 +302,42 @@ namespace pumpd::coupling
                 }
             if (g->stops)
               {
-                stopped[front] = true;
-                out << "  tip " << g->tip << " " << g->reason << " at " << to_text(g->to) << "\n";
+                stopped[g->crack][tip.vertex == 0] = true;
+                out << "  tip " << g->flat << " " << g->reason << " at " << to_text(g->to) << "\n";
                 result.stop_reason += (result.stop_reason.empty() ? "" : "; ") + g->reason;
               }
           }
-        if (crack->length() > length)
+        if (total_length(cracks) > length)
           ++result.increments;
-        recorder.crack_path(crack->vertices());
+        std::vector<geometry::Polyline> paths;
+        for (const auto &c : cracks)
+          paths.push_back(c.vertices());
+        recorder.crack_paths(paths);
 
-        const bool growing = std::any_of(crack->tips().begin(), crack->tips().end(),
-                                         [&](const global::Tip &t) { return !stopped[t.vertex == 0]; });
-        if (last || !growing)
+        // A crack that lost its last tip at the boundary (not by joining) cuts the body through.
+        bool growing = false, cut_through = false;
+        for (std::size_t c = 0; c < cracks.size(); ++c)
           {
-            const std::string end = step == s.lefm.max_steps ? "maximum steps"
-                                    : at_limit               ? "maximum crack length"
-                                    : crack->tips().empty()  ? "the crack cut the body through"
-                                                             : "no tip grows";
+            for (const auto &t : cracks[c].tips())
+              growing |= !is_stopped(c, t);
+            cut_through |= cracks[c].tips().empty() &&
+                           std::none_of(growth.begin(), growth.end(), [&](const Growth &g) { return g.crack == c && g.joins; });
+          }
+        if (last || !growing || joined || cut_through)
+          {
+            const std::string end = joined ? "the cracks joined (the run ends: junctions are not enriched)"
+                                    : step == s.lefm.max_steps ? "maximum steps"
+                                    : at_limit                 ? "maximum crack length"
+                                    : cut_through              ? "the crack cut the body through"
+                                                               : "no tip grows";
             result.stop_reason += (result.stop_reason.empty() ? "" : "; ") + end;
             break;
           }
       }
-    result.path    = crack->vertices();
+    for (const auto &c : cracks)
+      result.paths.push_back(c.vertices());
+    result.path    = result.paths.front();
+    result.joined  = joined;
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     out << "pumpd-metric lefm.seconds_total " << result.seconds << "\n"
         << "pumpd-metric lefm.global_dofs " << (result.steps.empty() ? 0u : result.steps.back().dofs) << "\n";

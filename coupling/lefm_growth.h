@@ -12,7 +12,16 @@
 // A tip stops cleanly when it reaches the outline (the crack is clipped to it and the tip
 // disappears), when it would enter a hole (it stops `hole margin` before it), when K_I <= 0
 // (closed crack); the run stops when no tip is left, after `max_steps` increments or at the
-// maximum crack length.
+// maximum crack length (with several cracks: their total length).
+//
+// Several cracks: every tip of every crack has its state. The step's load factor is the smallest
+// lambda_c over the tips still growing; every tip whose lambda_c <= lambda_min (1 + tolerance)
+// (`Simultaneous growth tolerance`) grows by its da along its maximum hoop stress direction, the
+// others wait (quasi-static: they are not yet critical at that load). A tip whose increment would
+// reach another crack's face (within look_ahead da, or crossing a segment grown earlier in the step)
+// joins it: the new segment is clipped to the face and ends there, the end becomes a junction and
+// the tip disappears (global::Crack::join). The run then ends: the global problem does not enrich
+// junctions (the Heaviside function of the joined crack would extend across the other).
 #pragma once
 
 #include <cstddef>
@@ -38,6 +47,7 @@ namespace pumpd::coupling
     double       halving_angle    = 0.;    ///< [deg]: da / (1 + |theta_c| / this); 0: fixed da
     unsigned int max_steps        = 100;   ///< growth increments
     unsigned int output_interval  = 5;     ///< global_NNN.vtu every n steps
+    double       simultaneous_tolerance = 1e-3; ///< relative, on lambda_c: tips that grow together
 
     void add_parameters(dealii::ParameterHandler &prm);
   };
@@ -53,7 +63,7 @@ namespace pumpd::coupling
   struct LefmGrowthStep
   {
     std::size_t     step = 0;
-    std::size_t     tip  = 0;
+    std::size_t     tip  = 0; ///< over all tips, cracks in order, tips in each crack's order
     geometry::Point position;
     double          crack_length = 0.; ///< of the whole polyline at the solve [m]
     double          k1 = 0., k2 = 0.;  ///< [Pa m^1/2] at lambda = 1
@@ -62,11 +72,14 @@ namespace pumpd::coupling
     double          increment    = 0.; ///< length of the segment added to this tip [m] (0: none)
     unsigned int    dofs         = 0;
     double          solve_seconds = 0.;
+    std::size_t     crack        = 0; ///< index of the tip's crack
   };
 
   struct LefmGrowthResult
   {
-    geometry::Polyline          path;          ///< the final crack
+    geometry::Polyline              path;  ///< the final first crack
+    std::vector<geometry::Polyline> paths; ///< every final crack, in order
+    bool                            joined = false; ///< a tip joined another crack
     std::vector<LefmGrowthStep> steps;
     std::size_t                 increments = 0; ///< growth steps done
     std::string                 stop_reason;

@@ -64,6 +64,14 @@ namespace pumpd::coupling
       write_path(path("crack_path.csv"), crack);
   }
 
+  void Recorder::crack_paths(const std::vector<geometry::Polyline> &cracks) const
+  {
+    if (!writes())
+      return;
+    for (std::size_t k = 0; k < cracks.size(); ++k)
+      write_path(path(k == 0 ? "crack_path.csv" : "crack_path_" + std::to_string(k + 1) + ".csv"), cracks[k]);
+  }
+
   void Recorder::load_displacement(std::size_t step, double lambda, double load, double displacement,
                                    double crack_length, geometry::Point tip)
   {

@@ -1,7 +1,8 @@
 // What a run writes for people (DESIGN.md, "Output of a run"), the same for every method:
 //   body.csv               the body's curves and the named points of its conditions (for plots)
 //   reference_path.csv     the scene's reference path, if any
-//   crack_path.csv         the crack, rewritten at every step
+//   crack_path.csv         the crack, rewritten at every step; crack_path_2.csv, ... the further
+//                          cracks of a run with several (the same x_m,y_m columns)
 //   load_displacement.csv  the scene's reported load and displacement per accepted step
 //   global.pvd + global_NNN.vtu, pd.pvd + pd_NNN.vtu   ParaView series
 //   <table>.csv            the method's own table (load_steps.csv), row by row
@@ -10,6 +11,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "csv.h"
 #include "model.h"
@@ -33,6 +35,8 @@ namespace pumpd::coupling
     CsvFile table(const std::string &file, const std::string &header) const;
 
     void crack_path(const geometry::Polyline &crack) const;
+    /// crack_path.csv for the first crack, crack_path_<k>.csv for the k-th (k >= 2).
+    void crack_paths(const std::vector<geometry::Polyline> &cracks) const;
     void load_displacement(std::size_t step, double lambda, double load, double displacement, double crack_length,
                            geometry::Point tip);
     void global_state(const GlobalProblem &global, double time);

@@ -14,6 +14,7 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <set>
 #include <sstream>
@@ -40,7 +41,7 @@ namespace pumpd::coupling
   {
     if (cracks.size() != 1)
       throw InvalidParameter("Initial cracks", std::to_string(cracks.size()) + " cracks",
-                             "this method grows exactly one crack (several cracks come in a later version)");
+                             "this method grows exactly one crack (LEFM growth grows several)");
     return cracks.front();
   }
 
@@ -62,8 +63,10 @@ namespace pumpd::coupling
     prm.add_parameter("Initial cracks", initial_cracks,
                       "Crack polylines \"x1,y1; x2,y2; ...\" [m], several separated by |. An end on the outline or on "
                       "a hole's rim is a mouth, every other end a tip; vertices inside the body, segments crossing "
-                      "neither the outline nor a hole. Empty: no crack; pumpd then lists where one would start (section "
-                      "Initiation) and stops.",
+                      "neither the outline nor a hole; two cracks neither touch nor cross and keep at least a tenth of "
+                      "the mesh cell apart where they come closest. LEFM growth grows several cracks, the other "
+                      "methods one. Empty: no crack; pumpd then lists where one would start (section Initiation) and "
+                      "stops.",
                       Patterns::Anything());
     prm.add_parameter("Output directory", output_directory,
                       "Where the results go (created if missing).", Patterns::DirectoryName());
@@ -505,6 +508,19 @@ namespace pumpd::coupling
                                  "; prescribe more components (e.g. ux and uy at one point and uy at another)");
     }
 
+    /// The smallest distance between two polylines that do not cross, and the vertex where it is
+    /// taken (the nearest points of two disjoint segments include an end of one of them).
+    std::pair<double, Point> polyline_gap(const geometry::Polyline &a, const geometry::Polyline &b)
+    {
+      std::pair<double, Point> best{std::numeric_limits<double>::infinity(), Point{}};
+      for (const auto &[from, to] : {std::pair{&a, &b}, std::pair{&b, &a}})
+        for (const Point &p : *from)
+          for (std::size_t s = 0; s + 1 < to->size(); ++s)
+            if (const double d = geometry::distance_to_segment(p, (*to)[s], (*to)[s + 1]); d < best.first)
+              best = {d, p};
+      return best;
+    }
+
     std::vector<geometry::Polyline> read_cracks(const std::string &text, const geometry::Body &body,
                                                 const dealii::Triangulation<2> &tria, double tolerance)
     {
@@ -549,12 +565,24 @@ namespace pumpd::coupling
             }
           cracks.push_back(crack);
         }
+      // Two cracks must keep apart by a tenth of the mesh cell where they come closest (closer,
+      // the Heaviside enrichment of one node's support could not tell them apart).
       for (std::size_t a = 0; a < cracks.size(); ++a)
         for (std::size_t b = a + 1; b < cracks.size(); ++b)
-          for (std::size_t s = 0; s + 1 < cracks[a].size(); ++s)
-            if (geometry::segment_crosses_polyline(cracks[a][s], cracks[a][s + 1], cracks[b]))
-              throw InvalidParameter("Initial cracks", to_text(cracks[a]) + " | " + to_text(cracks[b]),
-                                     "two cracks touch or cross: give them as one polyline");
+          {
+            const std::string pair = to_text(cracks[a]) + " | " + to_text(cracks[b]);
+            for (std::size_t s = 0; s + 1 < cracks[a].size(); ++s)
+              if (geometry::segment_crosses_polyline(cracks[a][s], cracks[a][s + 1], cracks[b]))
+                throw InvalidParameter("Initial cracks", pair, "two cracks touch or cross: give them as one polyline");
+            const auto [gap, at] = polyline_gap(cracks[a], cracks[b]);
+            const auto cell = dealii::GridTools::find_active_cell_around_point(tria, dealii::Point<2>(at.x, at.y));
+            const double limit = cell.state() == dealii::IteratorState::valid ? 0.1 * cell->diameter() : 0.;
+            if (gap < limit)
+              throw InvalidParameter("Initial cracks", pair,
+                                     "two cracks come within " + to_text(gap) + " m of each other at " + to_text(at) +
+                                       ", less than a tenth of the mesh cell there (" + to_text(limit) +
+                                       " m): move them apart or give them as one polyline");
+          }
       return cracks;
     }
 

@@ -29,28 +29,30 @@ namespace pumpd::global
   using Cell = DoFHandler<2>::active_cell_iterator;
 
   void EnrichedElasticity::Impl::evaluate(const FEValuesBase<2> &fv, const std::vector<LocalFunction> &functions,
-                                          const std::vector<int> &side, BasisValues &out) const
+                                          const Sides &side, BasisValues &out) const
   {
-    const unsigned int nq = fv.n_quadrature_points, nf = functions.size();
+    const unsigned int nq = fv.n_quadrature_points, nf = functions.size(), n = stride();
     out.value.assign(nf, std::vector<double>(nq, 0.));
     out.grad.assign(nf, std::vector<Tensor<1, 2>>(nq));
-    std::array<std::optional<BranchValues>, 2> branch; // per tip, at the current point
+    std::vector<std::optional<BranchValues>> branch(2 * n); // per tip (2 crack + tip), at the current point
     for (unsigned int q = 0; q < nq; ++q)
       {
-        branch = {};
+        std::fill(branch.begin(), branch.end(), std::nullopt);
         for (unsigned int f = 0; f < nf; ++f)
           {
             const LocalFunction &fn = functions[f];
+            const int            s  = side[q * n + fn.crack];
             double               g  = 1.; // psi(x) - psi(x_p)
             Tensor<1, 2>         grad_psi;
+            auto                &b  = branch[2 * fn.crack + fn.tip];
             if (fn.kind == 0)
-              g = side[q] - fn.shift;
+              g = s - fn.shift;
             else if (fn.kind > 0)
               {
-                if (!branch[fn.tip])
-                  branch[fn.tip] = branch_on_side(*crack, to_point(fv.quadrature_point(q)), fn.tip, side[q]);
-                g           = branch[fn.tip]->value[fn.kind - 1] - fn.shift;
-                const auto d = branch[fn.tip]->gradient[fn.kind - 1];
+                if (!b)
+                  b = branch_on_side(cracks[fn.crack], to_point(fv.quadrature_point(q)), fn.tip, s);
+                g           = b->value[fn.kind - 1] - fn.shift;
+                const auto d = b->gradient[fn.kind - 1];
                 grad_psi[0] = d.x;
                 grad_psi[1] = d.y;
               }
@@ -70,7 +72,7 @@ namespace pumpd::global
   }
 
   void EnrichedElasticity::Impl::field(const FEValuesBase<2> &fv, const std::vector<LocalFunction> &functions,
-                                       const std::vector<int> &side, std::vector<Tensor<1, 2>> &u,
+                                       const Sides &side, std::vector<Tensor<1, 2>> &u,
                                        std::vector<Tensor<2, 2>> &grad) const
   {
     BasisValues basis;
@@ -99,7 +101,7 @@ namespace pumpd::global
     FEValues<2>       fv_plain(mapping, fe, gauss, flags), fv_tip(mapping, fe, gauss_tip, flags),
       fv_far_tip(mapping, fe, gauss_far_tip, flags);
     BasisValues       basis;
-    std::vector<int>  side;
+    Sides             side;
     FullMatrix<double> K;
     Vector<double>     F;
 
@@ -113,9 +115,7 @@ namespace pumpd::global
           fv = &fv_cut.emplace(mapping, fe, data.quadrature, flags);
         fv->reinit(cell);
         const unsigned int nq = fv->n_quadrature_points, nf = functions.size();
-        side.resize(nq);
-        for (unsigned int q = 0; q < nq; ++q)
-          side[q] = crack ? side_at(cell, q, fv->quadrature_point(q)) : 1;
+        sides_at(cell, *fv, side);
         evaluate(*fv, functions, side, basis);
 
         K.reinit(2 * nf, 2 * nf);
@@ -149,9 +149,9 @@ namespace pumpd::global
         constraints.distribute_local_to_global(K, F, unknowns_of(functions), matrix, rhs);
       }
 
-    // Tractions on boundary faces. A face the crack mouth cuts is integrated on its two parts
-    // (the traction and the enriched functions jump there); the side of each point comes from
-    // the crack's level set.
+    // Tractions on boundary faces. A face crack mouths cut is integrated on its parts between the
+    // crossings (the traction and the enriched functions jump there); the sides of each point come
+    // from the cracks' level sets.
     const QGauss<1>  face_rule(settings.tip_order);
     const UpdateFlags face_flags =
       update_values | update_gradients | update_quadrature_points | update_JxW_values | update_normal_vectors;
@@ -160,11 +160,12 @@ namespace pumpd::global
         for (const auto f : cell->face_indices())
           if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == bc.id)
             {
-              Quadrature<1> rule = face_rule;
-              if (crack)
+              // The crossings of every crack with the face, at parameters t of a + t (b - a).
+              const Point         a = to_point(cell->face(f)->vertex(0)), b = to_point(cell->face(f)->vertex(1));
+              std::vector<double> crossings;
+              for (const auto &crack : cracks)
                 {
-                  const Point a = to_point(cell->face(f)->vertex(0)), b = to_point(cell->face(f)->vertex(1));
-                  const auto &v = crack->vertices();
+                  const auto &v = crack.vertices();
                   for (std::size_t s = 0; s + 1 < v.size(); ++s)
                     {
                       const Point  d = b - a, e = v[s + 1] - v[s];
@@ -173,25 +174,35 @@ namespace pumpd::global
                         continue;
                       const double t = cross(v[s] - a, e) / den, u = cross(v[s] - a, d) / den;
                       if (t > 1e-12 && t < 1. - 1e-12 && u >= 0. && u <= 1.)
+                        crossings.push_back(t);
+                    }
+                }
+              Quadrature<1> rule = face_rule;
+              if (!crossings.empty())
+                {
+                  std::sort(crossings.begin(), crossings.end());
+                  crossings.insert(crossings.begin(), 0.);
+                  crossings.push_back(1.);
+                  std::vector<dealii::Point<1>> points;
+                  std::vector<double>           weights;
+                  for (std::size_t k = 0; k + 1 < crossings.size(); ++k)
+                    {
+                      const double lo = crossings[k], hi = crossings[k + 1];
+                      for (unsigned int q = 0; q < face_rule.size(); ++q)
                         {
-                          std::vector<dealii::Point<1>> points;
-                          std::vector<double>           weights;
-                          for (const auto &[lo, hi] : {std::pair<double, double>{0., t}, {t, 1.}})
-                            for (unsigned int q = 0; q < face_rule.size(); ++q)
-                              {
-                                points.emplace_back(lo + (hi - lo) * face_rule.point(q)[0]);
-                                weights.push_back((hi - lo) * face_rule.weight(q));
-                              }
-                          rule = Quadrature<1>(points, weights);
+                          points.emplace_back(lo + (hi - lo) * face_rule.point(q)[0]);
+                          weights.push_back((hi - lo) * face_rule.weight(q));
                         }
                     }
+                  rule = Quadrature<1>(points, weights);
                 }
               FEFaceValues<2> fv_face(mapping, fe, rule, face_flags);
               fv_face.reinit(cell, f);
               const auto functions = local_functions(cell);
-              side.resize(rule.size());
+              side.assign(rule.size() * stride(), 1);
               for (unsigned int q = 0; q < rule.size(); ++q)
-                side[q] = crack ? crack->side(to_point(fv_face.quadrature_point(q))) : 1;
+                for (unsigned int c = 0; c < cracks.size(); ++c)
+                  side[q * stride() + c] = cracks[c].side(to_point(fv_face.quadrature_point(q)));
               BasisValues face_basis;
               evaluate(fv_face, functions, side, face_basis);
               F.reinit(2 * functions.size());
@@ -250,7 +261,7 @@ namespace pumpd::global
     const UpdateFlags            flags  = update_values | update_gradients | update_quadrature_points | update_JxW_values;
     geometry::Point              force;
     BasisValues                  basis;
-    std::vector<int>             side;
+    Sides                        side;
     std::vector<Tensor<1, 2>>    u;
     std::vector<Tensor<2, 2>>    grad;
     for (const auto &cell : dof_handler.active_cell_iterators())
@@ -261,12 +272,10 @@ namespace pumpd::global
           continue;
         FEValues<2> fv(mapping, fe, quadrature(cell), flags);
         fv.reinit(cell);
-        side.resize(fv.n_quadrature_points);
-        for (unsigned int q = 0; q < side.size(); ++q)
-          side[q] = crack ? side_at(cell, q, fv.quadrature_point(q)) : 1;
+        sides_at(cell, fv, side);
         evaluate(fv, functions, side, basis);
         field(fv, functions, side, u, grad);
-        for (unsigned int q = 0; q < side.size(); ++q)
+        for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
           {
             const Tensor<2, 2> eps   = 0.5 * (grad[q] + transpose(grad[q]));
             Tensor<2, 2>       sigma = 2. * mu * eps;

@@ -232,13 +232,29 @@ namespace pumpd::global
     update_tips();
   }
 
+  double Crack::distance(Point x) const
+  {
+    double d = std::numeric_limits<double>::infinity();
+    for (std::size_t s = 0; s + 1 < points.size(); ++s)
+      d = std::min(d, geometry::distance_to_segment(x, points[s], points[s + 1]));
+    return d;
+  }
+
+  void Crack::join(std::size_t t, Point at)
+  {
+    const bool front = tip_list[check_tip(t, tip_list.size())].vertex == 0;
+    grow(t, at);
+    joined[front ? 0 : 1] = true;
+    update_tips();
+  }
+
   void Crack::update_tips()
   {
     tip_list.clear();
     const std::size_t last = points.size() - 1;
-    if (body.clearance(points.front()) > tol)
+    if (!joined[0] && body.clearance(points.front()) > tol)
       tip_list.push_back({points.front(), unit(points.front() - points[1]), 0});
-    if (body.clearance(points.back()) > tol)
+    if (!joined[1] && body.clearance(points.back()) > tol)
       tip_list.push_back({points.back(), unit(points.back() - points[last - 1]), last});
   }
 } // namespace pumpd::global

@@ -1,7 +1,10 @@
 // A crack in the global problem: a polyline that grows at its tips (DESIGN.md, global/).
 // Plain geometry, no deal.II: level sets, tip frames and the enrichment functions' values.
 //
-// Ends: an end on the body's boundary (outline or a hole's rim) is a mouth, any other end a tip. Level sets:
+// Ends: an end on the body's boundary (outline or a hole's rim) is a mouth, an end joined to another
+// crack's face (join()) a junction, any other end a tip. A crack given to the constructor needs a
+// tip (both ends on the boundary would cut the body through); growth may leave none (a tip that
+// reaches the outline or joins another crack). Level sets:
 //   phi(x): signed distance to the crack extended by the rays tangent to its end segments;
 //           + on the left of the polyline (walking from the first to the last vertex). At a point
 //           whose nearest crack point is an interior vertex the sign comes from the
@@ -59,17 +62,23 @@ namespace pumpd::global
     BranchValues          branch_functions(Point x, std::size_t t) const;
     /// Index of the tip nearest to x.
     std::size_t nearest_tip(Point x) const;
+    /// Distance from x to the polyline (its segments, not their extensions).
+    double distance(Point x) const;
 
     /// Extends tip t to new_position (a new segment). Throws InvalidParameter if the new segment
     /// crosses the crack or leaves the body; the tip frame follows the new segment.
     void grow(std::size_t t, Point new_position);
+    /// Extends tip t to `at` (as grow) on another crack's face and ends it there: that end becomes
+    /// a junction and the tip disappears.
+    void join(std::size_t t, Point at);
 
   private:
     void update_tips();
 
-    geometry::Polyline points;
-    geometry::Body     body;
-    double             tol;
-    std::vector<Tip>   tip_list;
+    geometry::Polyline  points;
+    geometry::Body      body;
+    double              tol;
+    std::vector<Tip>    tip_list;
+    std::array<bool, 2> joined{}; ///< the first / the last vertex is a junction
   };
 } // namespace pumpd::global

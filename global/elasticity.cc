@@ -72,8 +72,22 @@ namespace pumpd::global
 
   EnrichedElasticity::~EnrichedElasticity() = default;
 
-  void EnrichedElasticity::set_crack(std::optional<Crack> crack) { impl->crack = std::move(crack); }
-  const std::optional<Crack> &EnrichedElasticity::crack() const { return impl->crack; }
+  void EnrichedElasticity::set_crack(std::optional<Crack> crack)
+  {
+    set_cracks(crack ? std::vector<Crack>{std::move(*crack)} : std::vector<Crack>{});
+  }
+
+  const std::optional<Crack> &EnrichedElasticity::crack() const { return impl->single_crack; }
+
+  void EnrichedElasticity::set_cracks(std::vector<Crack> cracks)
+  {
+    impl->single_crack.reset();
+    if (cracks.size() == 1)
+      impl->single_crack = cracks.front();
+    impl->cracks = std::move(cracks);
+  }
+
+  const std::vector<Crack> &EnrichedElasticity::cracks() const { return impl->cracks; }
 
   void EnrichedElasticity::add_dirichlet(unsigned int id, SidedField value, bool fix_x, bool fix_y)
   {

@@ -1,12 +1,17 @@
 // Linear elasticity on the whole body with a partition-of-unity enriched crack (XFEM/GFEM),
 // in the style of the deal.II tutorials: setup / assemble / solve, then evaluation.
 //
-// Space (Moes, Dolbow & Belytschko 1999; shifted form: Belytschko et al. 2001):
-//   u(x) = sum_p phi_p(x) [ u_p + (H(x) - H(x_p)) b_p  (p in Heaviside nodes)
-//                               + sum_j (F_j(x) - F_j(x_p)) c_pj  (p in tip nodes) ]
-// phi_p: the Q1 hat function of node p. Heaviside nodes: support cut completely by the crack,
-// no tip in it, smaller side of the support at least `min_cut_fraction` of it. Tip nodes: within
-// `tip_radius` of a tip (geometric enrichment) or on a cell that holds the tip. The enriched
+// Space (Moes, Dolbow & Belytschko 1999; shifted form: Belytschko et al. 2001), cracks k = 1..n:
+//   u(x) = sum_p phi_p(x) [ u_p + sum_k (H_k(x) - H_k(x_p)) b_pk  (p in Heaviside nodes of crack k)
+//                               + sum_k sum_j (F_kj(x) - F_kj(x_p)) c_pkj  (p in tip nodes of k) ]
+// phi_p: the Q1 hat function of node p; H_k the Heaviside function of crack k's level set, F_kj
+// the branch functions of the tip of crack k nearest to node p. Heaviside nodes of crack k:
+// support cut completely by crack k, no tip of k in it, smaller side of the support at least
+// `min_cut_fraction` of it. Tip nodes of crack k: within `tip_radius` of a tip of k (geometric
+// enrichment) or on a cell that holds it. A node carries one block per crack (Heaviside or tip):
+// a node two cracks cut has two Heaviside blocks. Cut cells: a cell several cracks cut is split
+// by the lines of all their pieces in it (cut_cell.h), so each sub-triangle lies on one side of
+// every crack and the discontinuous integrands are integrated exactly as for one crack. The enriched
 // degrees of freedom are managed here, on top of a scalar Q1 DoFHandler, rather than with
 // FE_Enriched: the shift by the nodal value is per node, which FE_Enriched cannot express
 // (../shared/notes/xfem-in-deal.ii-9.4.md). Hanging nodes: a cell's basis takes each hanging
@@ -120,9 +125,14 @@ namespace pumpd::global
     /// empty when there is nothing to warn about.
     const std::vector<std::string> &warnings() const { return warning_list; }
 
-    /// The crack (none: plain elasticity, no enrichment assembled).
+    /// The crack (none: plain elasticity, no enrichment assembled): set_cracks with none or one.
     void set_crack(std::optional<Crack> crack);
+    /// The crack when there is exactly one, none otherwise.
     const std::optional<Crack> &crack() const;
+    /// Any number of cracks, each with its own enrichment. Cracks must not cross or touch each
+    /// other (a crack end on another crack's face is not enriched as a junction).
+    void set_cracks(std::vector<Crack> cracks);
+    const std::vector<Crack> &cracks() const;
 
     void add_dirichlet(unsigned int boundary_id, SidedField value, bool fix_x = true, bool fix_y = true);
     void add_dirichlet_vertex(geometry::Point at, geometry::Point value, bool fix_x = true, bool fix_y = true);

@@ -12,6 +12,7 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 
+#include <algorithm>
 #include <array>
 #include <optional>
 #include <vector>
@@ -28,17 +29,33 @@ namespace pumpd::global
     tip
   };
 
+  /// One enrichment block of a node: the Heaviside function of crack `crack` (tip < 0; 2 unknowns
+  /// from `start`, shift[0] = H(x_p)) or the four branch functions of its tip `tip` (8 unknowns,
+  /// shift = F_j(x_p)). A node carries at most one block per crack, in crack order.
+  struct NodeEnrichment
+  {
+    unsigned int          crack = 0;
+    int                   tip   = -1;
+    unsigned int          start = 0;
+    std::array<double, 4> shift{};
+  };
+
   /// One scalar basis function of a cell: sum_v weight[v] N_v(x) (psi(x) - shift), carried by the
-  /// two unknowns dof (x) and dof + 1 (y). kind: -1 standard (psi = 1, no shift), 0 Heaviside,
-  /// 1..4 branch function F_kind of tip `tip`.
+  /// two unknowns dof (x) and dof + 1 (y). kind: -1 standard (psi = 1, no shift), 0 Heaviside of
+  /// crack `crack`, 1..4 branch function F_kind of tip `tip` of crack `crack`.
   struct LocalFunction
   {
     unsigned int          dof  = 0;
     int                   kind = -1;
     unsigned int          tip  = 0;
+    unsigned int          crack = 0;
     double                shift = 0.;
     std::array<double, 4> weight{};
   };
+
+  /// The crack sides of a set of points: side[q * stride + c] = +-1 for point q and crack c
+  /// (stride = max(1, number of cracks); without a crack every side is +1).
+  using Sides = std::vector<int>;
 
   /// The unknowns of a cell's functions: (x, y) of each, in order.
   inline std::vector<dealii::types::global_dof_index> unknowns_of(const std::vector<LocalFunction> &functions)
@@ -61,14 +78,15 @@ namespace pumpd::global
 
   struct CellData
   {
-    bool                      cut          = false; ///< a crack piece lies in the cell
+    bool                      cut          = false; ///< a piece of some crack lies in the cell
+    std::vector<char>         cut_by;               ///< [crack]: a piece of this crack lies in the cell
     bool                      subdivided   = false; ///< integrated on its own sub-triangles
     bool                      has_tip      = false;
     bool                      tip_enriched = false; ///< some basis function carries F_j
     bool                      near_tip     = false; ///< within two diameters of a tip
-    int                       side         = 1;     ///< side of an uncut cell (of its centre)
+    Sides                     side;                 ///< [crack]: side of the cell's centre
     std::vector<SubTriangle>  triangles;            ///< subdivided cells only
-    std::vector<int>          triangle_side;
+    Sides                     triangle_side;        ///< [triangle * stride + crack], of its centroid
     dealii::Quadrature<2>     quadrature;           ///< subdivided cells only
     std::vector<unsigned int> triangle_of_point;
   };
@@ -122,15 +140,22 @@ namespace pumpd::global
     std::vector<LocalFunction> local_functions(const dealii::DoFHandler<2>::active_cell_iterator &cell) const;
     /// The cell's quadrature (sub-triangles on cut cells, higher Gauss where branch functions live).
     const dealii::Quadrature<2> &quadrature(const dealii::DoFHandler<2>::active_cell_iterator &cell) const;
-    /// Side of the crack at quadrature point q of the cell's own quadrature.
-    int side_at(const dealii::DoFHandler<2>::active_cell_iterator &cell, unsigned int q, const dealii::Point<2> &x) const;
-    /// Values and gradients of the local functions at the points of fv; side[q] is the crack
-    /// side of point q (decides H and the sign of theta).
+    /// max(1, number of cracks): the stride of Sides.
+    unsigned int stride() const { return std::max<std::size_t>(1, cracks.size()); }
+    /// The sides of the points of fv, which uses the cell's own quadrature: on a sub-triangle of a
+    /// cell a crack cuts, the triangle's side of that crack; elsewhere the crack's level set.
+    void sides_at(const dealii::DoFHandler<2>::active_cell_iterator &cell, const dealii::FEValuesBase<2> &fv,
+                  Sides &side) const;
+    /// The sides of x: each crack's level set, or `on_crack` where x lies on that crack (within
+    /// `tolerance` of its level set's zero).
+    void sides_of(const Point &x, int on_crack, double tolerance, Sides &side) const;
+    /// Values and gradients of the local functions at the points of fv; side holds the crack
+    /// sides of every point (decide H and the sign of theta).
     void evaluate(const dealii::FEValuesBase<2> &fv, const std::vector<LocalFunction> &functions,
-                  const std::vector<int> &side, BasisValues &out) const;
+                  const Sides &side, BasisValues &out) const;
     /// u_h and grad u_h (rows d u_x, d u_y) at the points of fv.
     void field(const dealii::FEValuesBase<2> &fv, const std::vector<LocalFunction> &functions,
-               const std::vector<int> &side, std::vector<dealii::Tensor<1, 2>> &u,
+               const Sides &side, std::vector<dealii::Tensor<1, 2>> &u,
                std::vector<dealii::Tensor<2, 2>> &grad) const;
 
     geometry::Point              displacement(geometry::Point x, int side) const;
@@ -145,7 +170,7 @@ namespace pumpd::global
     std::vector<StressIntensity> stress_intensity_factors(double radius_factor) const;
     double                       strain_energy() const;
     /// Visits every quadrature point of the body (the cells' own quadratures, cut cells on their
-    /// sub-triangles): its position, crack side, u_h, grad u_h and JxW.
+    /// sub-triangles): its position, side of the first crack, u_h, grad u_h and JxW.
     void for_each_point(const std::function<void(const Point &x, int side, const dealii::Tensor<1, 2> &u,
                                                  const dealii::Tensor<2, 2> &grad, double JxW)> &visit) const;
     void                         write_vtu(const std::string &filename) const;
@@ -157,7 +182,8 @@ namespace pumpd::global
     dealii::FE_Q<2>            fe;
     dealii::DoFHandler<2>      dof_handler;
     dealii::QGauss<2>          gauss, gauss_tip, gauss_far_tip;
-    std::optional<Crack>       crack;
+    std::vector<Crack>         cracks;
+    std::optional<Crack>       single_crack; ///< the crack when there is exactly one (crack())
 
     std::vector<Dirichlet>                                  dirichlet;
     std::vector<VertexDirichlet>                            vertex_dirichlet;
@@ -170,10 +196,8 @@ namespace pumpd::global
     std::vector<dealii::Point<2>>                           support;
     std::vector<std::vector<std::pair<unsigned int, double>>> parents;
     std::vector<unsigned int>                               nodes;
-    std::vector<NodeKind>                                   kind;
-    std::vector<unsigned int>                               enriched_start, node_tip;
-    std::vector<int>                                        node_side;
-    std::vector<std::array<double, 4>>                      node_branch;
+    std::vector<NodeKind>                                   kind; ///< tip if some block is a tip's
+    std::vector<std::vector<NodeEnrichment>>                enrichment;
     std::vector<CellData>                                   cells;
     unsigned int                                            n_dofs = 0;
 

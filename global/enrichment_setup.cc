@@ -127,155 +127,192 @@ namespace pumpd::global
         for (const auto &[p, w] : *hanging.get_constraint_entries(s))
           parents[s].push_back({unsigned(node_of[p]), w});
 
-    const unsigned int n_nodes = nodes.size();
+    const unsigned int n_nodes = nodes.size(), n_cracks = cracks.size();
     kind.assign(n_nodes, NodeKind::standard);
-    node_tip.assign(n_nodes, 0);
-    node_side.assign(n_nodes, 1);
-    node_branch.assign(n_nodes, {});
+    enrichment.assign(n_nodes, {});
     cells.assign(tria.n_active_cells(), CellData());
     const double diameter_scale = GridTools::minimal_cell_diameter(tria);
 
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    if (crack)
-      {
-        for (const auto &v : crack->vertices())
-          {
-            bool in_mesh = true;
-            try
-              {
-                in_mesh = GridTools::find_active_cell_around_point(mapping, tria, to_dealii(v)).first.state() ==
-                          IteratorState::valid;
-              }
-            catch (...)
-              {
-                in_mesh = false;
-              }
-            if (!in_mesh)
-              throw InvalidParameter("Crack vertex", "(" + std::to_string(v.x) + ", " + std::to_string(v.y) + ")",
-                                     "must lie inside the mesh");
-          }
+    for (const auto &crack : cracks)
+      for (const auto &v : crack.vertices())
+        {
+          bool in_mesh = true;
+          try
+            {
+              in_mesh = GridTools::find_active_cell_around_point(mapping, tria, to_dealii(v)).first.state() ==
+                        IteratorState::valid;
+            }
+          catch (...)
+            {
+              in_mesh = false;
+            }
+          if (!in_mesh)
+            throw InvalidParameter("Crack vertex", "(" + std::to_string(v.x) + ", " + std::to_string(v.y) + ")",
+                                   "must lie inside the mesh");
+        }
 
-        // Pass 1: crack pieces and tips per cell; tip nodes.
-        const auto &vertices = crack->vertices();
-        for (const auto &cell : dof_handler.active_cell_iterators())
+    // Pass 1: crack pieces and tips per cell; tip nodes. A cell several cracks cut is split by the
+    // lines of all their pieces, so every sub-triangle lies on one side of each crack.
+    // node_tip[c][p]: the tip of crack c whose branch functions node p carries, -1 none;
+    // tip_in_cell[cell][c]: a tip of crack c lies in the cell.
+    std::vector<std::vector<int>>  node_tip(n_cracks, std::vector<int>(n_nodes, -1));
+    std::vector<std::vector<char>> tip_in_cell(cells.size(), std::vector<char>(n_cracks, 0));
+    std::vector<std::vector<char>> tip_cell_node(n_cracks, std::vector<char>(n_nodes, 0));
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        if (cracks.empty())
+          break;
+        CellData  &data = cells[cell->active_cell_index()];
+        const auto poly = corners(cell);
+        data.cut_by.assign(n_cracks, 0);
+        std::vector<std::array<RefPoint, 2>> pieces;
+        // Tips in the cell, and tips within one cell diameter of it (their nearest point of
+        // the cell): sub-triangles are fanned from these points and get Duffy rules, so the
+        // 1/sqrt(r) gradients are integrated almost-polar wherever they are (nearly) singular.
+        std::vector<RefPoint> tips, near_tips;
+        for (unsigned int c = 0; c < n_cracks; ++c)
           {
-            CellData  &data = cells[cell->active_cell_index()];
-            const auto poly = corners(cell);
-            std::vector<std::array<RefPoint, 2>> pieces;
+            const auto &vertices = cracks[c].vertices();
             for (std::size_t s = 0; s + 1 < vertices.size(); ++s)
               {
                 Point p, q;
                 if (clip_segment(vertices[s], vertices[s + 1], poly, p, q))
-                  pieces.push_back({{to_unit(mapping, cell, p), to_unit(mapping, cell, q)}});
+                  {
+                    pieces.push_back({{to_unit(mapping, cell, p), to_unit(mapping, cell, q)}});
+                    data.cut_by[c] = 1;
+                  }
               }
-            // Tips in the cell, and tips within one cell diameter of it (their nearest point of
-            // the cell): sub-triangles are fanned from these points and get Duffy rules, so the
-            // 1/sqrt(r) gradients are integrated almost-polar wherever they are (nearly) singular.
-            std::vector<RefPoint> tips, near_tips;
-            for (const auto &t : crack->tips())
+            for (const auto &t : cracks[c].tips())
               if (inside(t.position, poly, 1e-12))
-                tips.push_back(to_unit(mapping, cell, t.position));
+                {
+                  tips.push_back(to_unit(mapping, cell, t.position));
+                  tip_in_cell[cell->active_cell_index()][c] = 1;
+                }
               else
                 {
                   const Point nearest = nearest_on_polygon(t.position, poly);
                   if (geometry::norm(t.position - nearest) < cell->diameter())
                     near_tips.push_back(to_unit(mapping, cell, nearest));
                 }
-            data.cut     = !pieces.empty();
-            data.has_tip = !tips.empty();
-            data.side    = crack->side(to_point(cell->center()));
-            near_tips.insert(near_tips.end(), tips.begin(), tips.end());
-            if (data.cut || !near_tips.empty())
-              data.triangles = subdivide_unit_square(pieces, near_tips);
-            data.subdivided = !data.triangles.empty();
-            if (data.has_tip)
-              {
-                if (settings.tip_radius < cell->diameter())
-                  throw InvalidParameter("Tip enrichment radius", std::to_string(settings.tip_radius),
-                                         "must be at least the diameter of the cell at the tip (" +
-                                           std::to_string(cell->diameter()) + " m)");
-                cell->get_dof_indices(dofs);
+            data.side.push_back(cracks[c].side(to_point(cell->center())));
+          }
+        data.cut     = !pieces.empty();
+        data.has_tip = !tips.empty();
+        near_tips.insert(near_tips.end(), tips.begin(), tips.end());
+        if (data.cut || !near_tips.empty())
+          data.triangles = subdivide_unit_square(pieces, near_tips);
+        data.subdivided = !data.triangles.empty();
+        if (data.has_tip)
+          {
+            if (settings.tip_radius < cell->diameter())
+              throw InvalidParameter("Tip enrichment radius", std::to_string(settings.tip_radius),
+                                     "must be at least the diameter of the cell at the tip (" +
+                                       std::to_string(cell->diameter()) + " m)");
+            cell->get_dof_indices(dofs);
+            for (unsigned int c = 0; c < n_cracks; ++c)
+              if (tip_in_cell[cell->active_cell_index()][c])
                 for (auto s : dofs)
                   for (const auto &pw : parents[s])
-                    kind[pw.first] = NodeKind::tip;
-              }
+                    tip_cell_node[c][pw.first] = 1;
           }
+      }
+    for (unsigned int c = 0; c < n_cracks; ++c)
+      if (!cracks[c].tips().empty())
         for (unsigned int p = 0; p < n_nodes; ++p)
           {
-            const Point x = to_point(support[nodes[p]]);
-            node_tip[p]   = crack->nearest_tip(x);
-            if (geometry::norm(x - crack->tips()[node_tip[p]].position) <= settings.tip_radius)
-              kind[p] = NodeKind::tip;
+            const Point       x = to_point(support[nodes[p]]);
+            const std::size_t t = cracks[c].nearest_tip(x);
+            if (tip_cell_node[c][p] || geometry::norm(x - cracks[c].tips()[t].position) <= settings.tip_radius)
+              {
+                node_tip[c][p] = t;
+                kind[p]        = NodeKind::tip;
+              }
           }
 
-        // Pass 2: quadrature of cut cells, areas of each side in every node's support.
-        std::vector<double> area_plus(n_nodes, 0.), area_minus(n_nodes, 0.);
-        std::vector<char>   support_cut(n_nodes, 0), support_tip(n_nodes, 0);
-        for (const auto &cell : dof_handler.active_cell_iterators())
+    // Pass 2: quadrature of cut cells, areas of each side of each crack in every node's support.
+    std::vector<std::vector<double>> area_plus(n_cracks, std::vector<double>(n_nodes, 0.)),
+      area_minus(n_cracks, std::vector<double>(n_nodes, 0.));
+    std::vector<std::vector<char>> support_cut(n_cracks, std::vector<char>(n_nodes, 0)),
+      support_tip(n_cracks, std::vector<char>(n_nodes, 0));
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        if (cracks.empty())
+          break;
+        CellData &data = cells[cell->active_cell_index()];
+        cell->get_dof_indices(dofs);
+        for (auto s : dofs)
+          for (const auto &pw : parents[s])
+            data.tip_enriched |= kind[pw.first] == NodeKind::tip;
+        for (const auto &crack : cracks)
+          for (const auto &tip : crack.tips())
+            data.near_tip |= geometry::norm(to_point(cell->center()) - tip.position) < 2.5 * cell->diameter();
+        if (data.subdivided)
           {
-            CellData &data = cells[cell->active_cell_index()];
-            cell->get_dof_indices(dofs);
-            for (auto s : dofs)
-              for (const auto &pw : parents[s])
-                data.tip_enriched |= kind[pw.first] == NodeKind::tip;
-            for (const auto &tip : crack->tips())
-              data.near_tip |= geometry::norm(to_point(cell->center()) - tip.position) < 2.5 * cell->diameter();
+            data.quadrature = sub_triangle_quadrature(
+              data.triangles, data.tip_enriched && data.near_tip ? settings.tip_order : settings.cut_order, data.triangle_of_point);
+            for (const auto &tri : data.triangles)
+              {
+                const RefPoint c = (1. / 3.) * (tri.vertex[0] + tri.vertex[1] + tri.vertex[2]);
+                const Point    x = to_point(mapping.transform_unit_to_real_cell(cell, c));
+                for (const auto &crack : cracks)
+                  data.triangle_side.push_back(crack.side(x));
+              }
+          }
+        std::vector<double> JxW;
+        if (data.cut)
+          {
+            FEValues<2> fv(mapping, fe, data.quadrature, update_JxW_values);
+            fv.reinit(cell);
+            JxW = fv.get_JxW_values();
+          }
+        for (unsigned int c = 0; c < n_cracks; ++c)
+          {
             double plus = 0., minus = 0.;
-            if (data.subdivided)
-              {
-                data.quadrature = sub_triangle_quadrature(
-                  data.triangles, data.tip_enriched && data.near_tip ? settings.tip_order : settings.cut_order, data.triangle_of_point);
-                for (const auto &tri : data.triangles)
-                  {
-                    const RefPoint c = (1. / 3.) * (tri.vertex[0] + tri.vertex[1] + tri.vertex[2]);
-                    data.triangle_side.push_back(crack->side(to_point(mapping.transform_unit_to_real_cell(cell, c))));
-                  }
-              }
-            if (data.cut)
-              {
-                FEValues<2> fv(mapping, fe, data.quadrature, update_JxW_values);
-                fv.reinit(cell);
-                for (unsigned int q = 0; q < data.quadrature.size(); ++q)
-                  (data.triangle_side[data.triangle_of_point[q]] > 0 ? plus : minus) += fv.JxW(q);
-              }
+            if (data.cut_by[c])
+              for (unsigned int q = 0; q < JxW.size(); ++q)
+                (data.triangle_side[data.triangle_of_point[q] * n_cracks + c] > 0 ? plus : minus) += JxW[q];
             else
-              (data.side > 0 ? plus : minus) += cell->measure();
+              (data.side[c] > 0 ? plus : minus) += cell->measure();
             for (auto s : dofs)
               for (const auto &pw : parents[s])
                 {
-                  area_plus[pw.first] += plus;
-                  area_minus[pw.first] += minus;
-                  support_cut[pw.first] |= data.cut;
-                  support_tip[pw.first] |= data.has_tip;
+                  area_plus[c][pw.first] += plus;
+                  area_minus[c][pw.first] += minus;
+                  support_cut[c][pw.first] |= data.cut_by[c];
+                  support_tip[c][pw.first] |= tip_in_cell[cell->active_cell_index()][c];
                 }
           }
-        for (unsigned int p = 0; p < n_nodes; ++p)
-          {
-            node_side[p] = crack->side(to_point(support[nodes[p]]));
-            if (kind[p] == NodeKind::tip)
-              {
-                const auto b = crack->branch_functions(to_point(support[nodes[p]]), node_tip[p]);
-                node_branch[p] = b.value;
-              }
-            else if (support_cut[p] && !support_tip[p] &&
-                     std::min(area_plus[p], area_minus[p]) >= settings.min_cut_fraction * (area_plus[p] + area_minus[p]))
-              kind[p] = NodeKind::heaviside;
-          }
       }
-
-    // Unknowns: (u_x, u_y) of every node, then 2 per Heaviside node and 8 per tip node.
-    n_dofs = 2 * n_nodes;
-    enriched_start.assign(n_nodes, 0);
     for (unsigned int p = 0; p < n_nodes; ++p)
-      if (kind[p] != NodeKind::standard)
+      for (unsigned int c = 0; c < n_cracks; ++c)
         {
-          enriched_start[p] = n_dofs;
-          n_dofs += kind[p] == NodeKind::heaviside ? 2 : 8;
+          const Point x = to_point(support[nodes[p]]);
+          if (node_tip[c][p] >= 0)
+            enrichment[p].push_back({c, node_tip[c][p], 0, cracks[c].branch_functions(x, node_tip[c][p]).value});
+          else if (support_cut[c][p] && !support_tip[c][p] &&
+                   std::min(area_plus[c][p], area_minus[c][p]) >=
+                     settings.min_cut_fraction * (area_plus[c][p] + area_minus[c][p]))
+            {
+              enrichment[p].push_back({c, -1, 0, {{double(cracks[c].side(x)), 0., 0., 0.}}});
+              if (kind[p] == NodeKind::standard)
+                kind[p] = NodeKind::heaviside;
+            }
         }
 
-    // Dirichlet constraints. On a Heaviside node the jump of the boundary data across the crack
-    // sets the enriched unknown, so that each side interpolates its own boundary data; branch
-    // unknowns on the boundary are set to zero.
+    // Unknowns: (u_x, u_y) of every node, then per node 2 per Heaviside block and 8 per tip block.
+    n_dofs = 2 * n_nodes;
+    for (auto &blocks : enrichment)
+      for (auto &b : blocks)
+        {
+          b.start = n_dofs;
+          n_dofs += b.tip < 0 ? 2 : 8;
+        }
+
+    // Dirichlet constraints. On a Heaviside block the jump of the boundary data across its crack
+    // sets the enriched unknown, so that each side interpolates its own boundary data (value(x, s):
+    // the data on side s of that crack; the standard unknown takes the node's side of the first
+    // crack); branch unknowns on the boundary are set to zero.
     constraints.clear();
     const auto constrain = [&](unsigned int dof, double value) {
       if (!constraints.is_constrained(dof))
@@ -284,19 +321,27 @@ namespace pumpd::global
           constraints.set_inhomogeneity(dof, value);
         }
     };
-    const auto constrain_node = [&](unsigned int p, const Point &own, const Point &other, bool fx, bool fy) {
-      const std::array<bool, 2>   fix = {{fx, fy}};
-      const std::array<double, 2> u = {{own.x, own.y}}, w = {{other.x, other.y}};
+    const auto constrain_node = [&](unsigned int p, const std::function<Point(int)> &value, bool fx, bool fy) {
+      const std::array<bool, 2> fix = {{fx, fy}};
+      const Point               x   = to_point(support[nodes[p]]);
+      const Point               own = value(cracks.empty() ? 1 : cracks[0].side(x));
+      const std::array<double, 2> u = {{own.x, own.y}};
       for (unsigned int c = 0; c < 2; ++c)
         {
           if (!fix[c])
             continue;
           constrain(2 * p + c, u[c]);
-          if (kind[p] == NodeKind::heaviside)
-            constrain(enriched_start[p] + c, (w[c] - u[c]) / (-2. * node_side[p]));
-          else if (kind[p] == NodeKind::tip)
-            for (unsigned int j = 0; j < 4; ++j)
-              constrain(enriched_start[p] + 2 * j + c, 0.);
+          for (const auto &b : enrichment[p])
+            if (b.tip < 0)
+              {
+                const int    s = int(b.shift[0]);
+                const Point  here = value(s), other = value(-s);
+                const double jump = c == 0 ? other.x - here.x : other.y - here.y;
+                constrain(b.start + c, jump / (-2. * s));
+              }
+            else
+              for (unsigned int j = 0; j < 4; ++j)
+                constrain(b.start + 2 * j + c, 0.);
         }
     };
     for (const auto &bc : dirichlet)
@@ -314,7 +359,7 @@ namespace pumpd::global
                       {
                         const unsigned int p = pw.first;
                         const Point        x = to_point(support[nodes[p]]);
-                        constrain_node(p, bc.value(x, node_side[p]), bc.value(x, -node_side[p]), bc.fix_x, bc.fix_y);
+                        constrain_node(p, [&](int side) { return bc.value(x, side); }, bc.fix_x, bc.fix_y);
                       }
                   }
               }
@@ -333,7 +378,7 @@ namespace pumpd::global
                 for (const auto &pw : parents[s])
                   {
                     const Point u = bc.value(to_point(support[nodes[pw.first]]));
-                    constrain_node(pw.first, u, u, bc.fix_x, bc.fix_y);
+                    constrain_node(pw.first, [u](int) { return u; }, bc.fix_x, bc.fix_y);
                   }
             }
         if (!found)
@@ -346,7 +391,7 @@ namespace pumpd::global
         for (unsigned int p = 0; p < n_nodes && !found; ++p)
           if (geometry::norm(to_point(support[nodes[p]]) - bc.at) <= tol)
             {
-              constrain_node(p, bc.value, bc.value, bc.fix_x, bc.fix_y);
+              constrain_node(p, [&](int) { return bc.value; }, bc.fix_x, bc.fix_y);
               found = true;
             }
         if (!found)
@@ -375,12 +420,13 @@ namespace pumpd::global
     std::vector<LocalFunction> out;
     for (const auto &[p, w] : weight)
       {
-        out.push_back({2 * p, -1, 0, 0., w});
-        if (kind[p] == NodeKind::heaviside)
-          out.push_back({enriched_start[p], 0, 0, double(node_side[p]), w});
-        else if (kind[p] == NodeKind::tip)
-          for (int j = 0; j < 4; ++j)
-            out.push_back({enriched_start[p] + 2 * j, j + 1, node_tip[p], node_branch[p][j], w});
+        out.push_back({2 * p, -1, 0, 0, 0., w});
+        for (const auto &b : enrichment[p])
+          if (b.tip < 0)
+            out.push_back({b.start, 0, 0, b.crack, b.shift[0], w});
+          else
+            for (int j = 0; j < 4; ++j)
+              out.push_back({b.start + 2 * j, j + 1, unsigned(b.tip), b.crack, b.shift[j], w});
       }
     return out;
   }
@@ -395,9 +441,24 @@ namespace pumpd::global
     return data.near_tip ? gauss_tip : gauss_far_tip;
   }
 
-  int EnrichedElasticity::Impl::side_at(const Cell &cell, unsigned int q, const dealii::Point<2> &x) const
+  void EnrichedElasticity::Impl::sides_at(const Cell &cell, const FEValuesBase<2> &fv, Sides &side) const
   {
-    const CellData &data = cells[cell->active_cell_index()];
-    return data.cut ? data.triangle_side[data.triangle_of_point[q]] : crack->side(to_point(x));
+    const CellData    &data = cells[cell->active_cell_index()];
+    const unsigned int n    = stride();
+    side.assign(fv.n_quadrature_points * n, 1);
+    for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
+      for (unsigned int c = 0; c < cracks.size(); ++c)
+        side[q * n + c] = data.cut && data.cut_by[c] ? data.triangle_side[data.triangle_of_point[q] * n + c]
+                                                     : cracks[c].side(to_point(fv.quadrature_point(q)));
+  }
+
+  void EnrichedElasticity::Impl::sides_of(const Point &x, int on_crack, double tolerance, Sides &side) const
+  {
+    side.assign(stride(), 1);
+    for (unsigned int c = 0; c < cracks.size(); ++c)
+      {
+        const double phi = cracks[c].signed_distance(x);
+        side[c]          = std::abs(phi) < tolerance ? on_crack : phi >= 0. ? 1 : -1;
+      }
   }
 } // namespace pumpd::global

@@ -38,12 +38,11 @@ namespace pumpd::global
     const Quadrature<2> point(found.second);
     FEValues<2>         fv(mapping, fe, point, field_flags);
     fv.reinit(found.first);
-    int side = 1;
-    if (crack)
-      side = std::abs(crack->signed_distance(x)) < 1e-12 * found.first->diameter() ? side_hint : crack->side(x);
+    Sides side;
+    sides_of(x, side_hint, 1e-12 * found.first->diameter(), side);
     std::vector<Tensor<1, 2>> u;
     std::vector<Tensor<2, 2>> grad;
-    field(fv, local_functions(found.first), {side}, u, grad);
+    field(fv, local_functions(found.first), side, u, grad);
     return {u[0][0], u[0][1]};
   }
 
@@ -51,19 +50,17 @@ namespace pumpd::global
     const std::function<void(const Point &x, int side, const Tensor<1, 2> &u, const Tensor<2, 2> &grad, double JxW)>
       &visit) const
   {
-    std::vector<int>          side;
+    Sides                     side;
     std::vector<Tensor<1, 2>> u;
     std::vector<Tensor<2, 2>> grad;
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         FEValues<2> fv(mapping, fe, quadrature(cell), field_flags);
         fv.reinit(cell);
-        side.resize(fv.n_quadrature_points);
-        for (unsigned int q = 0; q < side.size(); ++q)
-          side[q] = crack ? side_at(cell, q, fv.quadrature_point(q)) : 1;
+        sides_at(cell, fv, side);
         field(fv, local_functions(cell), side, u, grad);
-        for (unsigned int q = 0; q < side.size(); ++q)
-          visit(to_point(fv.quadrature_point(q)), side[q], u[q], grad[q], fv.JxW(q));
+        for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
+          visit(to_point(fv.quadrature_point(q)), side[q * stride()], u[q], grad[q], fv.JxW(q));
       }
   }
 
@@ -122,20 +119,28 @@ namespace pumpd::global
   // Where the zone is too small for that (tip radius of a few cells), the step of the earlier
   // definition: q = 1 at nodes within radius_factor * tip_radius, one ring of cells.
   // ring_of() returns (r_in, r_out); r_in = r_out means the step.
+  // Several cracks: the domain of a tip must not hold another crack (its faces, not parallel to
+  // the tip's x_1, would add to I), so tip_radius and r_safe are capped by the distance d_other
+  // from the tip to the nearest other crack: radius and r_safe at most 0.9 d_other.
   std::vector<StressIntensity> EnrichedElasticity::Impl::stress_intensity_factors(double radius_factor) const
   {
     std::vector<StressIntensity> result;
-    if (!crack)
-      return result;
     const double lambda = material.lambda(), mu = material.mu(), kappa = material.kolosov();
-    const double radius = radius_factor * settings.tip_radius;
     std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
-    std::vector<int>          side;
+    Sides                     side;
     std::vector<Tensor<1, 2>> u;
     std::vector<Tensor<2, 2>> grad;
-    for (std::size_t t = 0; t < crack->tips().size(); ++t)
+    const unsigned int        n = stride();
+    for (unsigned int c = 0; c < cracks.size(); ++c)
+    for (std::size_t t = 0; t < cracks[c].tips().size(); ++t)
       {
-        const Tip   &tip = crack->tips()[t];
+        const Crack &crack = cracks[c];
+        const Tip   &tip   = crack.tips()[t];
+        double       tip_radius = settings.tip_radius;
+        for (unsigned int o = 0; o < cracks.size(); ++o)
+          if (o != c)
+            tip_radius = std::min(tip_radius, 0.9 * cracks[o].distance(tip.position));
+        const double radius = radius_factor * tip_radius;
         Tensor<2, 2> R; // rows: tip direction and its normal
         R[0][0] = tip.direction.x;
         R[0][1] = tip.direction.y;
@@ -143,7 +148,11 @@ namespace pumpd::global
         R[1][1] = tip.direction.x;
         const auto distance = [&](unsigned int p) { return geometry::norm(to_point(support[nodes[p]]) - tip.position); };
         // r_safe: the nearest node of a cell that is not fully enriched by this tip.
-        double r_safe = settings.tip_radius;
+        double r_safe = tip_radius;
+        const auto enriched_by_tip = [&](unsigned int p) {
+          return std::any_of(enrichment[p].begin(), enrichment[p].end(),
+                             [&](const NodeEnrichment &b) { return b.crack == c && b.tip == int(t); });
+        };
         for (const auto &cell : dof_handler.active_cell_iterators())
           {
             cell->get_dof_indices(dofs);
@@ -152,7 +161,7 @@ namespace pumpd::global
             for (unsigned int v = 0; v < 4; ++v)
               for (const auto &[p, w] : parents[dofs[v]])
                 {
-                  full &= kind[p] == NodeKind::tip && node_tip[p] == t;
+                  full &= enriched_by_tip(p);
                   nearest = std::min(nearest, distance(p));
                 }
             if (!full)
@@ -201,11 +210,9 @@ namespace pumpd::global
               continue;
             FEValues<2> fv(mapping, fe, quadrature(cell), field_flags);
             fv.reinit(cell);
-            side.resize(fv.n_quadrature_points);
-            for (unsigned int q = 0; q < side.size(); ++q)
-              side[q] = side_at(cell, q, fv.quadrature_point(q));
+            sides_at(cell, fv, side);
             field(fv, local_functions(cell), side, u, grad);
-            for (unsigned int q = 0; q < side.size(); ++q)
+            for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
               {
                 Tensor<1, 2> grad_q;
                 for (unsigned int v = 0; v < 4; ++v)
@@ -220,7 +227,7 @@ namespace pumpd::global
                 // across the straight extension of the last segment. The + side lies to the left
                 // of the polyline, which is the right of the tip direction at vertex 0.
                 const int    orientation = tip.vertex == 0 ? -1 : 1;
-                const double theta       = orientation * side[q] * std::acos(std::clamp(x1 / r, -1., 1.));
+                const double theta       = orientation * side[q * n + c] * std::acos(std::clamp(x1 / r, -1., 1.));
                 for (int mode = 1; mode <= 2; ++mode)
                   {
                     const auto   aux = lefm::williams(mode, r, theta, mu, kappa);
@@ -266,7 +273,7 @@ namespace pumpd::global
     const QGauss<1>     gauss(3);
     std::vector<Tensor<1, 2>> u;
     std::vector<Tensor<2, 2>> grad;
-    const auto stresses = [&](const Cell &cell, const std::vector<dealii::Point<2>> &x, const std::vector<int> &side) {
+    const auto stresses = [&](const Cell &cell, const std::vector<dealii::Point<2>> &x, const Sides &side) {
       std::vector<dealii::Point<2>> ref;
       for (const auto &p : x)
         ref.push_back(m.mapping.transform_real_to_unit_cell(cell, p));
@@ -311,20 +318,18 @@ namespace pumpd::global
           if ((face->center() - cell->center()) * n < 0.)
             n *= -1.;
           std::vector<dealii::Point<2>> x;
-          std::vector<int>              side;
+          Sides                         side, s;
           std::vector<double>           w;
           for (unsigned int q = 0; q < gauss.size(); ++q)
             {
               const dealii::Point<2> p = a + gauss.point(q)[0] * (b - a);
-              int                    s = 1;
-              if (m.crack)
-                {
-                  if (std::abs(m.crack->signed_distance(to_point(p))) < 1e-10 * length)
-                    continue;
-                  s = m.crack->side(to_point(p));
-                }
+              if (std::any_of(m.cracks.begin(), m.cracks.end(), [&](const Crack &c) {
+                    return std::abs(c.signed_distance(to_point(p))) < 1e-10 * length;
+                  }))
+                continue;
+              m.sides_of(to_point(p), 1, 0., s);
               x.push_back(p);
-              side.push_back(s);
+              side.insert(side.end(), s.begin(), s.end());
               w.push_back(gauss.weight(q) * length);
             }
           if (x.empty())
@@ -365,7 +370,7 @@ namespace pumpd::global
   std::vector<NodalStress> EnrichedElasticity::nodal_stresses() const
   {
     const Impl &m = *impl;
-    if (m.crack)
+    if (!m.cracks.empty())
       throw std::logic_error("nodal_stresses() is for a body without a crack");
     const double      lambda = m.material.lambda(), mu = m.material.mu();
     const QGauss<1>   line(2);
@@ -384,7 +389,7 @@ namespace pumpd::global
     for (const auto &cell : m.dof_handler.active_cell_iterators())
       {
         fv.reinit(cell);
-        m.field(fv, m.local_functions(cell), std::vector<int>(points.size(), 1), u, grad);
+        m.field(fv, m.local_functions(cell), Sides(points.size() * m.stride(), 1), u, grad);
         std::array<Tensor<2, 2>, 4> sigma;
         for (unsigned int q = 0; q < 4; ++q)
           sigma[q] = stress_of(grad[q], lambda, mu);
@@ -434,18 +439,19 @@ namespace pumpd::global
         for (const auto &f : functions)
           enrichment = std::max(enrichment, f.kind == 0 ? 1 : f.kind > 0 ? 2 : 0);
         std::vector<std::vector<RefPoint>> pieces;
-        std::vector<int>                   sides;
+        std::vector<Sides>                 sides; // per piece, per crack
+        const unsigned int                 n = stride();
         if (data.cut)
           for (unsigned int t = 0; t < data.triangles.size(); ++t)
             {
               const auto &v = data.triangles[t].vertex;
               pieces.push_back({v[0], v[1], v[2]});
-              sides.push_back(data.triangle_side[t]);
+              sides.emplace_back(data.triangle_side.begin() + t * n, data.triangle_side.begin() + (t + 1) * n);
             }
         else
           {
             pieces.push_back({RefPoint(0, 0), RefPoint(1, 0), RefPoint(1, 1), RefPoint(0, 1)});
-            sides.push_back(crack ? data.side : 1);
+            sides.push_back(cracks.empty() ? Sides(1, 1) : data.side);
           }
         for (unsigned int k = 0; k < pieces.size(); ++k)
           {
@@ -458,7 +464,10 @@ namespace pumpd::global
             fv.reinit(cell);
             std::vector<Tensor<1, 2>> u;
             std::vector<Tensor<2, 2>> grad;
-            field(fv, functions, std::vector<int>(points.size(), sides[k]), u, grad);
+            Sides side;
+            for (std::size_t i = 0; i < points.size(); ++i)
+              side.insert(side.end(), sides[k].begin(), sides[k].end());
+            field(fv, functions, side, u, grad);
             SubCell sc;
             for (unsigned int i = 0; i + 1 < points.size(); ++i)
               {

@@ -53,25 +53,22 @@ namespace pumpd::global
         const double xi = found.second[0], eta = found.second[1];
         // Q1 shape functions at the reference point, deal.II's vertex order.
         const std::array<double, 4> N = {{(1. - xi) * (1. - eta), xi * (1. - eta), (1. - xi) * eta, xi * eta}};
-        int side = 1;
-        if (crack)
-          {
-            const double phi = crack->signed_distance(points[i]);
-            side = std::abs(phi) < 1e-12 * cell->diameter() ? (side_hint.empty() || side_hint[i] >= 0 ? 1 : -1)
-                                                            : (phi >= 0. ? 1 : -1);
-          }
-        std::array<std::optional<BranchValues>, 2> branch;
+        Sides side;
+        sides_of(points[i], side_hint.empty() || side_hint[i] >= 0 ? 1 : -1, 1e-12 * cell->diameter(), side);
+        std::vector<std::optional<BranchValues>>     branch(2 * stride());
         std::vector<std::pair<unsigned int, double>> row;
         for (const auto &fn : local_functions(cell))
           {
-            double g = 1.;
+            const int s = side[fn.crack];
+            double    g = 1.;
+            auto     &b = branch[2 * fn.crack + fn.tip];
             if (fn.kind == 0)
-              g = side - fn.shift;
+              g = s - fn.shift;
             else if (fn.kind > 0)
               {
-                if (!branch[fn.tip])
-                  branch[fn.tip] = branch_on_side(*crack, points[i], fn.tip, side);
-                g = branch[fn.tip]->value[fn.kind - 1] - fn.shift;
+                if (!b)
+                  b = branch_on_side(cracks[fn.crack], points[i], fn.tip, s);
+                g = b->value[fn.kind - 1] - fn.shift;
               }
             double phi = 0.;
             for (unsigned int v = 0; v < 4; ++v)

@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """Crack path of a run as a PNG: scripts/plot_crack_path.py <output dir> -> <dir>/crack_path.png.
 
-Reads what the run wrote into the directory: crack_path.csv (our path), body.csv (the outline and
+Reads what the run wrote into the directory: crack_path.csv (our path; crack_path_2.csv, ... for
+the further cracks of a run with several), body.csv (the outline and
 the holes as curves, the named points of the boundary conditions), reference_path.csv where the
 scene has a reference path, and for a global-local run boxes.csv (every PD box, drawn light to
 dark blue as the run goes on). Run it with /usr/bin/python3 (Debian's python3-matplotlib).
@@ -56,6 +57,12 @@ if coupled:
 reference = f"{directory}/reference_path.csv"
 if os.path.exists(reference):
     ax.plot(*path(reference), color="tab:green", lw=1.2, label="reference path")
+others = 2
+while os.path.exists(f"{directory}/crack_path_{others}.csv"):
+    xo, yo = path(f"{directory}/crack_path_{others}.csv")
+    ax.plot(xo, yo, color="tab:orange", lw=1.6, marker=".", ms=3,
+            label="further cracks (pumpd)" if others == 2 else None)
+    others += 1
 x, y = path(f"{directory}/crack_path.csv")
 ax.plot(x, y, color="tab:red", lw=1.6, marker=".", ms=3, label="crack path (pumpd)")
 ax.plot(x[-1], y[-1], "o", color="tab:red", ms=5)

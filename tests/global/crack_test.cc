@@ -397,3 +397,31 @@ TEST(Crack, InvalidInputIsRefused)
   expect_invalid([] { edge_crack().polar({1., 0.5}, 1); }, "number of tips");
   expect_invalid([] { edge_crack().branch_functions({1., 0.5}, 1); }, "number of tips");
 }
+
+// join: the tip grows onto another crack's face and that end becomes a junction (no tip); the
+// other tip keeps growing; a crack without a tip is allowed once growth made it so.
+TEST(Crack, JoinTurnsTheTipIntoAJunction)
+{
+  Crack e = edge_crack();
+  e.join(0, {0.7, 0.5});
+  EXPECT_TRUE(e.tips().empty());
+  expect_point(e.vertices().back(), {0.7, 0.5}, 0.);
+
+  Crack i = interior_crack();
+  i.join(1, {1.6, 0.55});
+  ASSERT_EQ(i.tips().size(), 1u);
+  expect_point(i.tips()[0].position, {0.5, 0.5}, 0.);
+  i.grow(0, {0.4, 0.5});
+  ASSERT_EQ(i.tips().size(), 1u);
+  expect_point(i.tips()[0].position, {0.4, 0.5}, 0.);
+  expect_point(i.vertices().back(), {1.6, 0.55}, 0.);
+}
+
+// distance: to the segments, not to the level set's extension beyond the tips.
+TEST(Crack, DistanceIsToTheSegments)
+{
+  const Crack e = edge_crack();
+  EXPECT_NEAR(e.distance({0.3, 0.7}), 0.2, 1e-15);
+  EXPECT_NEAR(e.distance({0.9, 0.5}), 0.3, 1e-15);
+  EXPECT_NEAR(std::abs(e.signed_distance({0.9, 0.5})), 0., 1e-15);
+}

@@ -1,0 +1,93 @@
+// Offset pair of edge cracks under tension (prm/offset-pair.prm, meshes/offset-pair.geo): LEFM
+// growth of two cracks. The left crack runs from the left edge at y = 0.04, the right one from the
+// right edge at y = 0.06; the top edge is pulled, the bottom held. Checked:
+// - both cracks grow (their tips advance towards the middle of the plate);
+// - each path turns towards the other crack: the end of the left path lies above y = 0.04 (the
+//   right crack's side), the end of the right path below y = 0.06;
+// - the run ends for a stated reason: a tip joins the other crack (its path then ends on the
+//   other crack's face), or a tip reaches the outline;
+// - crack_path.csv holds the left crack and crack_path_2.csv the right one.
+// Prints pumpd-metric cracks.offset_pair.lefm_tip_gap_mm (at the end, the smallest distance from a
+// remaining tip to the other crack; 0 once they joined), .left_turn_mm and .right_turn_mm (how far
+// each end lies off its initial crack line towards the other crack), .joined (1 or 0), .increments.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <iostream>
+#include <limits>
+
+#include "csv.h"
+#include "geometry.h"
+#include "lefm_growth.h"
+#include "metric.h"
+#include "scene_file.h"
+
+using namespace pumpd;
+using geometry::Point;
+
+namespace
+{
+  /// Distance from p to the polyline.
+  double distance(Point p, const geometry::Polyline &line)
+  {
+    double d = std::numeric_limits<double>::infinity();
+    for (std::size_t s = 0; s + 1 < line.size(); ++s)
+      d = std::min(d, geometry::distance_to_segment(p, line[s], line[s + 1]));
+    return d;
+  }
+} // namespace
+
+TEST(OffsetPair, LefmGrowthTurnsTheTipsTowardsEachOther)
+{
+  const auto p      = test::scene_file("prm/offset-pair.prm", "offset_pair");
+  const auto scene  = coupling::build_scene(p.scene);
+  ASSERT_EQ(scene.cracks.size(), 2u);
+  const auto result = coupling::run_lefm_growth(scene, p.lefm_growth_settings(), std::cout);
+
+  ASSERT_EQ(result.paths.size(), 2u);
+  const auto &left = result.paths[0], &right = result.paths[1];
+  // The left crack starts at the left edge (vertex 0) and grows at its last vertex; the right one
+  // likewise from the right edge.
+  EXPECT_EQ(left.front().x, 0.);
+  EXPECT_EQ(right.front().x, 0.2);
+  EXPECT_GT(left.size(), 3u) << "the left crack grew";
+  EXPECT_GT(right.size(), 3u) << "the right crack grew";
+  EXPECT_GT(left.back().x, 0.07 + 0.01);
+  EXPECT_LT(right.back().x, 0.13 - 0.01);
+
+  // Turned towards the other crack.
+  const double left_turn = left.back().y - 0.04, right_turn = 0.06 - right.back().y;
+  EXPECT_GT(left_turn, 0.002) << "left path ends at (" << left.back().x << ", " << left.back().y << ")";
+  EXPECT_GT(right_turn, 0.002) << "right path ends at (" << right.back().x << ", " << right.back().y << ")";
+
+  // The end: joined (the end lies on the other crack) or stopped at the outline.
+  const bool joined = result.joined;
+  std::cout << "end: " << result.stop_reason << "\n";
+  if (joined)
+    {
+      EXPECT_NE(result.stop_reason.find("joined crack"), std::string::npos);
+      const double gap = std::min(distance(left.back(), right), distance(right.back(), left));
+      EXPECT_LT(gap, 1e-9) << "a joined path ends on the other crack";
+    }
+  else
+    EXPECT_NE(result.stop_reason.find("reached the outline"), std::string::npos) << result.stop_reason;
+
+  // The files: one per crack, the first in the one-crack format.
+  const auto dir   = std::filesystem::path(scene.output_directory);
+  const auto first = read_csv_rows((dir / "crack_path.csv").string());
+  const auto second = read_csv_rows((dir / "crack_path_2.csv").string());
+  EXPECT_EQ(first.size(), left.size());
+  EXPECT_EQ(second.size(), right.size());
+
+  // Tip gap at the end: 0 when joined, else the smallest distance from a remaining tip to the other crack.
+  double gap = 0.;
+  if (!joined)
+    gap = std::min(distance(left.back(), right), distance(right.back(), left));
+  test::metric("cracks.offset_pair.lefm_tip_gap_mm", 1e3 * gap);
+  test::metric("cracks.offset_pair.left_turn_mm", 1e3 * left_turn);
+  test::metric("cracks.offset_pair.right_turn_mm", 1e3 * right_turn);
+  test::metric("cracks.offset_pair.joined", joined ? 1. : 0.);
+  test::metric("cracks.offset_pair.increments", double(result.increments));
+}
