@@ -207,6 +207,8 @@ namespace pumpd::coupling
       std::size_t                   box = 0; ///< the index of the part that leads its box (itself if it leads)
       bool                          by_lefm = false;
       bool                          grows   = false; ///< its increment goes into the crack at this exchange's load
+      std::string                   stop;            ///< why the tip stopped at this exchange ("" while it goes on)
+      bool                          joined  = false; ///< it met another crack's face and joined it
     };
 
     /// One run of the cycle: its parts (global problem, a box and a controller per tip, recorder)
@@ -242,9 +244,9 @@ namespace pumpd::coupling
       /// accepted increments into the crack; "" or why the run stops (branching, no growth, every
       /// tip stopped at a hole or the outline).
       std::string grow(std::vector<TipExchange> &parts);
-      /// The increment of one tip into its crack, cut where it arrives at a hole, the outline or
-      /// another crack's face (it joins it there); "" or why the tip stops.
-      std::string grow_tip(std::size_t track, const geometry::Polyline &path);
+      /// The tip's increment into its crack, cut where it arrives at a hole, the outline or
+      /// another crack's face (it joins it there): sets why the tip stops, if it does.
+      void grow_tip(TipExchange &part);
       /// True if the ligament ahead of the tip (to the outline or a hole, along its direction) is
       /// narrower than Clearance over horizon of the finest box: no PD box resolves it.
       bool ligament_unresolved(const TipState &tip) const;
@@ -260,6 +262,9 @@ namespace pumpd::coupling
         geometry::Point at;
       };
       std::optional<Crossing> first_crossing(const geometry::Polyline &path, std::size_t own) const;
+      /// The nearest point of a crack other than `own` within `reach` of the path's end and ahead
+      /// of its last segment (the path's last segment index with it).
+      std::optional<Crossing> face_ahead(const geometry::Polyline &path, std::size_t own, double reach) const;
       /// The result: path, boxes, distances from the reference path; the summary metrics.
       GlobalLocalResult finish();
 
@@ -294,6 +299,7 @@ namespace pumpd::coupling
       GlobalLocalResult               result;
       double                          box_area_sum = 0., length0 = 0.;
       std::size_t                     boxes_placed = 0;
+      std::vector<std::string>        stopped_tips; ///< why each tip that stopped did, in order
       Clock::time_point               t0 = Clock::now();
     };
 
@@ -648,7 +654,6 @@ namespace pumpd::coupling
                  << " lambda_c";
           return reason.str();
         }
-      std::vector<std::string> reasons(tracks.size());
       for (auto &part : parts)
         {
           part.grows = grew(part) && part.record.lambda <=
@@ -660,52 +665,83 @@ namespace pumpd::coupling
             }
           const double before = crack_length();
           const auto  &path   = part.increment;
-          const auto   reason = grow_tip(part.track, path);
+          grow_tip(part);
           part.record.advance = crack_length() - before;
           if (path.size() > 1)
             part.record.kink = std::atan2(geometry::cross(part.tip.direction, path[1] - path[0]),
                                           geometry::dot(part.tip.direction, path[1] - path[0]));
-          if (!reason.empty())
+          if (!part.stop.empty() && part.by_lefm)
+            part.stop += " (the last ligament, narrower than " +
+                         pumpd::to_text(s.cycle.resolution.clearance_over_horizon, 3) +
+                         " horizons of the finest PD box, grown by LEFM: maximum hoop stress at G = G_c)";
+          if (!part.stop.empty())
             {
               tracks[part.track].stopped = true;
-              reasons[part.track] =
-                !part.by_lefm ? reason :
-                             reason + " (the last ligament, narrower than " +
-                               pumpd::to_text(s.cycle.resolution.clearance_over_horizon, 3) +
-                               " horizons of the finest PD box, grown by LEFM: maximum hoop stress at G = G_c)";
+              stopped_tips.push_back(part.stop);
             }
         }
       global.scale_to(lambda);
-      for (std::size_t c = 0; c < cracks.size(); ++c)
-        for (const auto &tip : cracks[c].tips())
-          if (!tracks[track_of(c, tip)].stopped)
-            return "";
+      // Cracks that meet end the run, as in LEFM growth: the joined crack's enrichment would need a
+      // junction function.
+      const bool met = std::any_of(parts.begin(), parts.end(), [](const TipExchange &p) { return p.joined; });
+      if (!met)
+        for (std::size_t c = 0; c < cracks.size(); ++c)
+          for (const auto &tip : cracks[c].tips())
+            if (!tracks[track_of(c, tip)].stopped)
+              return "";
       std::string stop;
-      for (const auto &reason : reasons)
-        if (!reason.empty())
-          stop += (stop.empty() ? "" : "; ") + reason;
+      for (const auto &reason : stopped_tips)
+        stop += (stop.empty() ? "" : "; ") + reason;
       return stop;
     }
 
-    std::string Cycle::grow_tip(std::size_t track, const geometry::Polyline &path)
+    void Cycle::grow_tip(TipExchange &part)
     {
-      const double horizon = tracks[track].pd.horizon;
-      auto         arrival = arrival_of(path, horizon);
-      // Another crack's face met by the increment, or by its last segment continued within a
-      // horizon (a ligament PD does not resolve, as at a hole): the tip joins that crack there.
-      auto        ahead = arrival.path;
-      if (arrival.reason.empty() && ahead.size() > 1)
-        ahead.push_back(ahead.back() + horizon / geometry::norm(ahead.back() - ahead[ahead.size() - 2]) *
-                                         (ahead.back() - ahead[ahead.size() - 2]));
-      const auto face = first_crossing(ahead, track / 2);
-      auto      &crack = cracks[track / 2];
+      const std::size_t track   = part.track;
+      const double      horizon = tracks[track].pd.horizon;
+      const auto        arrival = arrival_of(part.increment, horizon);
+      // Another crack's face met by the increment, or within a horizon ahead of the new tip (a
+      // ligament PD does not resolve, as at a hole): the tip joins that crack there.
+      auto face = first_crossing(arrival.path, track / 2);
+      if (!face && arrival.reason.empty() && arrival.path.size() > 1)
+        face = face_ahead(arrival.path, track / 2, horizon);
+      auto &crack = cracks[track / 2];
       for (std::size_t k = 1; k < arrival.path.size() && (!face || k <= face->segment); ++k)
         if (geometry::norm(arrival.path[k] - end_vertex(track)) > 1e-3 * h)
           crack.grow(tip_index(track), arrival.path[k]);
       if (!face)
-        return arrival.reason;
+        {
+          part.stop = arrival.reason;
+          return;
+        }
       crack.join(tip_index(track), face->at);
-      return "joined crack " + std::to_string(face->crack + 1) + " at " + to_text(face->at);
+      part.joined = true;
+      part.stop   = "crack " + std::to_string(track / 2 + 1) + " joined crack " + std::to_string(face->crack + 1) +
+                  " at " + to_text(face->at);
+    }
+
+    std::optional<Cycle::Crossing> Cycle::face_ahead(const geometry::Polyline &path, std::size_t own,
+                                                     double reach) const
+    {
+      const Point             tip = path.back(), d = tip - path[path.size() - 2];
+      std::optional<Crossing> nearest;
+      double                  least = reach;
+      for (std::size_t c = 0; c < cracks.size(); ++c)
+        {
+          const auto &v = cracks[c].vertices();
+          for (std::size_t j = 0; c != own && j + 1 < v.size(); ++j)
+            {
+              const Point  w = v[j + 1] - v[j];
+              const double t = std::clamp(geometry::dot(tip - v[j], w) / geometry::dot(w, w), 0., 1.);
+              const Point  q = v[j] + t * w;
+              if (const double r = norm(q - tip); r < least && geometry::dot(q - tip, d) > 0.)
+                {
+                  least   = r;
+                  nearest = Crossing{c, path.size() - 1, q};
+                }
+            }
+        }
+      return nearest;
     }
 
     std::optional<Cycle::Crossing> Cycle::first_crossing(const geometry::Polyline &path, std::size_t own) const
@@ -836,6 +872,8 @@ namespace pumpd::coupling
             out << "in the box of tip " << parts[part.box].track % 2;
           if (!part.grows && part.decision != Decision::too_small)
             out << "  waits: grew above this exchange's load";
+          if (!part.stop.empty() && !last)
+            out << "  stops: " << part.stop;
           out << "  ETA <= " << std::fixed << std::setprecision(0) << eta << " s" << std::defaultfloat
               << std::setprecision(6) << std::endl;
         }
