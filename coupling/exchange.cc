@@ -86,7 +86,7 @@ namespace pumpd::coupling
   ExchangeOutcome run_exchange(const local::PdModel &model, const BoundaryTransfer &transfer,
                                ExchangeController &controller, const TipState &tip, double allowed,
                                const std::function<bool(const geometry::Polyline &)> &arrives,
-                               const PeridynamicsSettings &pd, std::ostream &out)
+                               const PeridynamicsSettings &pd, std::ostream &out, const std::string &unit)
   {
     ExtractionSettings extraction;
     extraction.threshold = pd.crack_damage;
@@ -131,7 +131,7 @@ namespace pumpd::coupling
           break;
         const bool reaches = r.increment.path.size() > 1 && arrives(r.increment.path);
         r.decision         = controller.judge(r.increment.length(), allowed, reaches);
-        out << "    PD at " << std::setprecision(4) << lambda << " lambda_c: " << relaxed.iterations
+        out << "    PD at " << std::setprecision(4) << lambda << " " << unit << ": " << relaxed.iterations
             << " DR iterations, advance " << r.increment.length() << " m -> " << to_text(r.decision) << "\n"
             << std::setprecision(6);
         if (r.decision == ExchangeController::Decision::raise)

@@ -31,11 +31,13 @@ namespace pumpd::coupling
 
   /// Runs the states of one exchange for the tip at critical load factor lambda_c, an advance of
   /// at most `allowed`; `arrives(path)` says whether an increment reaches a hole or the outline
-  /// (accepted whatever its length). Progress (one line per state) to `out`.
+  /// (accepted whatever its length). Progress (one line per state, the load factor in units of
+  /// `unit`: the tip's lambda_c, or the lambda_i of a nucleation) to `out`.
   ExchangeOutcome run_exchange(const local::PdModel &model, const BoundaryTransfer &transfer,
                                ExchangeController &controller, const TipState &tip, double allowed,
                                const std::function<bool(const geometry::Polyline &)> &arrives,
-                               const PeridynamicsSettings &pd, std::ostream &out);
+                               const PeridynamicsSettings &pd, std::ostream &out,
+                               const std::string &unit = "lambda_c");
 
   const char *to_text(ExchangeController::Decision decision);
 
