@@ -152,9 +152,14 @@ namespace pumpd::coupling
 
     GlobalProblem global(scene, settings.global);
     global.solve_uncracked();
+    // Centred at the mouth, with room for the longest crack between the mouth and the no-fail band
+    // of every layer: half a side at least the layer, the band and the Maximum advance.
     BoxSettings box = settings.cycle.box;
     box.horizon     = pd.horizon;
     box.spacing     = pd.spacing();
+    box.behind      = 0.5;
+    box.size        = std::max(box.size, 2. * ((1. + layer_clearance) * pd.horizon + settings.cycle.exchange.max_advance));
+    box.max_size    = std::max(box.max_size, box.size);
     BoxPolicy boxes(scene.body, box);
 
     NucleatedCrack crack;
