@@ -5,13 +5,17 @@
 //     a horizon of it (a site deeper inside would start a crack with two tips, which the one-tip
 //     cycle cannot grow: refused). The crack opens against sigma_1: it leaves the mouth along
 //     t perpendicular to sigma_1's direction, the sense that leads into the material.
-//  2. The PD box: BoxPolicy's box for a tip at the mouth growing along t (clipped to the body,
-//     grown to take in a nearby hole); no crack in it. The boundary transfer maps the uncracked
+//  2. The PD box: BoxPolicy's box centred at the mouth (clipped to the body, grown to take in a
+//     nearby hole), a side of at least 2 (3 delta + Maximum advance) so that the longest crack
+//     stays clear of the layer's no-fail band below. The boundary transfer maps the uncracked
 //     global displacement per unit load factor onto its boundary layer. The bonds within two
 //     horizons of the layer stay linear elastic (a no-fail zone, as at full PD's pads): where the
 //     layer, held to the elastic field, meets a free surface of the softer PD body (its surface
 //     nodes lack bonds), the strain concentrates, and in a box whose stress hardly varies, such
-//     as a beam's tension face, the crack would form there instead of at the site.
+//     as a beam's tension face, the crack would form there instead of at the site. The body starts
+//     with a flaw of one lattice spacing at the mouth along t (bonds across it broken): below the
+//     lattice's resolution as a crack, it is the imperfection the damage localises at, where the
+//     stress hardly varies over the box (without it, the box's own imperfections take that role).
 //  3. Quasi-static PD states along lambda = (first, first + dlambda, ...) lambda_i, lambda_i of
 //     the site (sigma_1 = sigma_s), judged by the ExchangeController as an exchange is (exchange.h,
 //     the tip at the mouth and lambda_i in place of lambda_c): a state whose damage ridge, traced

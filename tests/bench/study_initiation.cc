@@ -3,7 +3,8 @@
 // of the whole panel (the crack forms and is traced by itself: coupling/full_pd.h). Label study
 // (not in CI): full PD of the panel takes minutes. Both at delta = 8 mm, m = 4 (h = 2 mm; full PD
 // at the scene's delta = 4 mm, m = 8 has about 750k nodes); the cycle's box, margin and advances
-// at twice the scene's, as the horizon is. Outputs under <build>/tests/bench/study_initiation_output/.
+// at twice the scene's, as the horizon is, and the horizon fixed (resolution rule `fixed`: no
+// halving near the corner and the left edge), so that both methods see the same PD material. Outputs under <build>/tests/bench/study_initiation_output/.
 // Metrics: initiation.lpanel.vs_fullpd_mean_mm (symmetric mean distance of the two paths over the
 // shorter one's extent, coupling/path_metrics.h), initiation.lpanel.coupled_over_fullpd_time, the
 // mouths' distance from the corner and each method's crack length.
@@ -17,6 +18,7 @@
 #include "full_pd.h"
 #include "metric.h"
 #include "nucleation.h"
+#include "parameters.h"
 #include "path_metrics.h"
 
 using namespace pumpd;
@@ -35,6 +37,7 @@ namespace
     p.cycle.exchange.max_advance = 0.016;
     p.cycle.exchange.min_advance = 0.008;
     p.cycle.exchange.near_distance = 0.016;
+    p.cycle.resolution.rule        = "fixed";
     std::filesystem::remove_all(p.scene.output_directory);
     return p;
   }
