@@ -174,11 +174,11 @@ namespace pumpd::coupling
       return best;
     }
 
-    /// Where a crack forms in a body without one: its mouth on the outline or a hole's rim, and
-    /// the direction it leaves the mouth in.
+    /// Where a crack forms in a body without one: its mouth on the outline or a hole's rim, the
+    /// material node next to it the ridge is traced from, and the direction it leaves the mouth in.
     struct Seed
     {
-      Point mouth, direction;
+      Point mouth, start, direction;
     };
 
     /// The seed of the crack in `field` (per node the damage): at the most damaged node within a
@@ -213,7 +213,7 @@ namespace pumpd::coupling
         }
       if (mass <= 0. || geometry::norm(moment) < 1e-3 * lattice.spacing() * mass)
         return std::nullopt;
-      return Seed{mouth, (1. / geometry::norm(moment)) * moment};
+      return Seed{mouth, lattice.position(*best), (1. / geometry::norm(moment)) * moment};
     }
 
     double peak_rss_mb()
@@ -349,7 +349,7 @@ namespace pumpd::coupling
     if (!initial.empty())
       {
         const Point tip = initial.back(), behind = initial[initial.size() - 2];
-        seed            = Seed{tip, (1. / geometry::norm(tip - behind)) * (tip - behind)};
+        seed            = Seed{tip, tip, (1. / geometry::norm(tip - behind)) * (tip - behind)};
       }
     ExtractionSettings extraction;
     extraction.threshold = pd.crack_damage;
@@ -507,7 +507,13 @@ namespace pumpd::coupling
                 // horizon long.
                 if (initial.empty() && length < pd.horizon)
                   seed = seed_crack(model, field, seedable, pd.crack_damage, pd.horizon);
-                increment = seed ? extract_crack(field, seed->mouth, seed->direction, extraction) : CrackIncrement{};
+                if (seed)
+                  {
+                    increment         = extract_crack(field, seed->start, seed->direction, extraction);
+                    increment.path[0] = seed->mouth;
+                  }
+                else
+                  increment = CrackIncrement{};
               }
             catch (const CrackBranching &e)
               {

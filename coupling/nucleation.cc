@@ -177,8 +177,18 @@ namespace pumpd::coupling
     exchange.first_load_factor = initiation.first_load_factor;
     exchange.start_below_accepted = false;
     ExchangeController controller(exchange);
-    TipState           at_mouth;
-    at_mouth.position             = mouth;
+    // The ridge is traced from the material node next to the mouth (the mouth's own cell may have
+    // its node outside the body, as at a re-entrant corner), the path then starts at the mouth.
+    const Point start = [&] {
+      const Point x    = mouth + 0.5 * pd.spacing() * t;
+      std::size_t best = model.nodes().front();
+      for (std::size_t i : model.nodes())
+        if (geometry::norm(model.lattice().position(i) - x) < geometry::norm(model.lattice().position(best) - x))
+          best = i;
+      return model.lattice().position(best);
+    }();
+    TipState at_mouth;
+    at_mouth.position             = start;
     at_mouth.direction            = t;
     at_mouth.critical_load_factor = site.load_factor;
     const double allowed = std::min(exchange.max_advance, settings.growth.length_limit());
@@ -212,7 +222,9 @@ namespace pumpd::coupling
                                  pumpd::to_text(outcome.load_factor, 4) + ", the largest bond stretch over its critical one " +
                                  pumpd::to_text(z, 4) + " at " + geometry::to_text(at, 4) + " (the scene does not break)");
       }
-    crack.path        = truncate(outcome.increment.path, allowed);
+    auto path         = outcome.increment.path;
+    path[0]           = mouth;
+    crack.path        = truncate(path, allowed);
     crack.load_factor = outcome.load_factor * site.load_factor;
     write_nucleation(scene, crack, model, outcome.state);
     out << "nucleation: a crack of " << geometry::length(crack.path) << " m formed at lambda = " << crack.load_factor
