@@ -177,8 +177,7 @@ namespace pumpd::coupling
     exchange.first_load_factor = initiation.first_load_factor;
     exchange.start_below_accepted = false;
     ExchangeController controller(exchange);
-    // The ridge is traced from the material node next to the mouth (the mouth's own cell may have
-    // its node outside the body, as at a re-entrant corner), the path then starts at the mouth.
+    // The material node next to the mouth, where the ridge is traced from (header comment, 3).
     const Point start = [&] {
       const Point x    = mouth + 0.5 * pd.spacing() * t;
       std::size_t best = model.nodes().front();

@@ -22,7 +22,10 @@
 //     from the mouth along t (crack_extraction.h), is at least the Minimum advance long is a
 //     crack; one longer than the Maximum advance is repeated at a lower load, then truncated.
 //     None up to the Maximum load factor: the scene does not break (InvalidParameter naming it,
-//     with the largest sigma_1 / sigma_s of the elastic field and the largest bond stretch seen).
+//     with the largest sigma_1 / sigma_s of the elastic field and the largest bond stretch seen;
+//     the last PD state is written to nucleation_pd.vtu). The ridge is traced from the material
+//     node next to the mouth (at a re-entrant corner the mouth's own cell may have its node outside
+//     the body); the path then starts at the mouth.
 // Only the first site (the largest ratio) is tried; the other candidates within the margin are
 // listed (initiation_sites.csv) and left alone.
 #pragma once
