@@ -70,7 +70,9 @@ namespace pumpd::coupling
         throw InvalidParameter("Initial cracks", "none",
                                "LEFM growth has no law for a crack to start (it grows a crack that is there): the "
                                "candidate sites are listed above" +
-                                 std::string(scene.output_directory.empty() ? "" : " and in " + scene.output_directory + "/initiation_sites.csv") +
+                                 std::string(scene.output_directory.empty()
+                                               ? ""
+                                               : " and in " + scene.output_directory + "/initiation_sites.csv") +
                                  "; give the crack to grow as Initial cracks, or let global-local or full PD start one");
       }
     else if (p.method == "lefm-growth")

@@ -4,7 +4,8 @@
 // (not in CI): full PD of the panel takes minutes. Both at delta = 8 mm, m = 4 (h = 2 mm; full PD
 // at the scene's delta = 4 mm, m = 8 has about 750k nodes); the cycle's box, margin and advances
 // at twice the scene's, as the horizon is, and the horizon fixed (resolution rule `fixed`: no
-// halving near the corner and the left edge), so that both methods see the same PD material. Outputs under <build>/tests/bench/study_initiation_output/.
+// halving near the corner and the left edge), so that both methods see the same PD material.
+// Outputs under <build>/tests/bench/study_initiation_output/.
 // Metrics: initiation.lpanel.vs_fullpd_mean_mm (symmetric mean distance of the two paths over the
 // shorter one's extent, coupling/path_metrics.h), initiation.lpanel.coupled_over_fullpd_time, the
 // mouths' distance from the corner and each method's crack length.
