@@ -87,7 +87,7 @@ namespace pumpd::coupling
                                ExchangeController &controller, const std::vector<TipState> &tips,
                                const std::vector<double> &allowed,
                                const std::function<bool(const geometry::Polyline &)> &arrives,
-                               const PeridynamicsSettings &pd, std::ostream &out)
+                               const PeridynamicsSettings &pd, std::ostream &out, const std::string &unit)
   {
     ExtractionSettings extraction;
     extraction.threshold = pd.crack_damage;
@@ -140,7 +140,7 @@ namespace pumpd::coupling
         const auto &increment = r.increments[farthest];
         const bool  reaches   = increment.path.size() > 1 && arrives(increment.path);
         r.decision            = controller.judge(increment.length(), allowed[farthest], reaches);
-        out << "    PD at " << std::setprecision(4) << lambda << " lambda_c: " << relaxed.iterations
+        out << "    PD at " << std::setprecision(4) << lambda << " " << unit << ": " << relaxed.iterations
             << " DR iterations, advance " << increment.length() << " m"
             << (tips.size() > 1 ? " (tip " + std::to_string(farthest) + " of the box)" : "") << " -> "
             << to_text(r.decision) << "\n"

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <iomanip>
 #include <limits>
+#include <optional>
 #include <ostream>
 #include <sstream>
 
@@ -19,6 +20,7 @@
 #include "exchange.h"
 #include "integrators.h"
 #include "model.h"
+#include "nucleation.h"
 #include "path_metrics.h"
 #include "pd_conditions.h"
 #include "recorder.h"
@@ -172,6 +174,48 @@ namespace pumpd::coupling
       return best;
     }
 
+    /// Where a crack forms in a body without one: its mouth on the outline or a hole's rim, the
+    /// material node next to it the ridge is traced from, and the direction it leaves the mouth in.
+    struct Seed
+    {
+      Point mouth, start, direction;
+    };
+
+    /// The seed of the crack in `field` (per node the damage): at the most damaged node within a
+    /// spacing of the boundary whose damage reaches `threshold`, among the nodes `eligible`; its
+    /// mouth the nearest boundary point, its direction towards the damage-weighted centroid of the
+    /// nodes above the threshold within three horizons of the mouth. None while no node qualifies.
+    std::optional<Seed> seed_crack(const local::PdModel &model, const DamageField &field,
+                                   const std::vector<char> &eligible, double threshold, double horizon)
+    {
+      const auto &lattice = model.lattice();
+      const auto &body    = model.region().body;
+      const auto  damage  = [&](std::size_t i) { return field.values[lattice.row(i) * field.nx + lattice.column(i)]; };
+      std::optional<std::size_t> best;
+      for (std::size_t i : model.nodes())
+        if (eligible[i] && damage(i) >= threshold && body.clearance(lattice.position(i)) < lattice.spacing() &&
+            (!best || damage(i) > damage(*best)))
+          best = i;
+      if (!best)
+        return std::nullopt;
+      const Point  mouth  = nearest_boundary_point(body, lattice.position(*best));
+      const double radius = 3. * horizon;
+      Point        moment;
+      double       mass = 0.;
+      for (std::size_t i : model.nodes())
+        {
+          const Point x = lattice.position(i);
+          if (eligible[i] && damage(i) >= threshold && geometry::norm(x - mouth) < radius)
+            {
+              moment = moment + (damage(i) - threshold) * (x - mouth);
+              mass += damage(i) - threshold;
+            }
+        }
+      if (mass <= 0. || geometry::norm(moment) < 1e-3 * lattice.spacing() * mass)
+        return std::nullopt;
+      return Seed{mouth, lattice.position(*best), (1. / geometry::norm(moment)) * moment};
+    }
+
     double peak_rss_mb()
     {
       rusage usage{};
@@ -202,12 +246,19 @@ namespace pumpd::coupling
       throw InvalidParameter("Maximum advance", text(p.max_advance),
                              "must be 0 or at least the target advance (" + text(a_t) + " m)");
 
-    // The crack, its mouth first: it is traced from its tip.
-    geometry::Polyline initial = scene.crack();
-    if (scene.body.clearance(initial.back()) < scene.body.clearance(initial.front()))
-      std::reverse(initial.begin(), initial.end());
-    const bool has_mouth = scene.body.clearance(initial.front()) <= 1e-8 * scene.body.bounding_box().width();
-    const bool by_mouth  = p.control == "crack mouth opening";
+    // The crack, its mouth first: it is traced from its tip. Without one, it is traced from the
+    // seed (seed_crack) of the damage; the mouth is not known before the crack forms, so the
+    // steps are taken in the control displacement.
+    geometry::Polyline initial;
+    if (!scene.cracks.empty())
+      {
+        initial = scene.crack();
+        if (scene.body.clearance(initial.back()) < scene.body.clearance(initial.front()))
+          std::reverse(initial.begin(), initial.end());
+      }
+    const bool has_mouth =
+      !initial.empty() && scene.body.clearance(initial.front()) <= 1e-8 * scene.body.bounding_box().width();
+    const bool by_mouth = p.control == "crack mouth opening" && !initial.empty();
     if (by_mouth && !has_mouth)
       throw InvalidParameter("Control", p.control,
                              "crack-mouth control needs a crack with a mouth on the outline or a hole's rim; use load point");
@@ -288,30 +339,44 @@ namespace pumpd::coupling
     const local::DynamicRelaxation relax(model, pd.tolerance, pd.max_iterations);
     const double                   n_nodes = double(model.nodes().size());
 
-    const Point tip0 = initial.back();
-    Point       dir0 = tip0 - initial[initial.size() - 2];
-    dir0             = (1. / geometry::norm(dir0)) * dir0;
+    // Nodes a crack may seed at: a horizon clear of every prescribed region and no-fail zone.
+    std::vector<char> seedable(model.lattice().storage_size(), 0);
+    for (std::size_t i : model.nodes())
+      seedable[i] = std::none_of(drive.regions.begin(), drive.regions.end(), [&](const local::PrescribedRegion &r) {
+        return r.contains(model.lattice().position(i), std::max(0., r.elastic_margin) + pd.horizon);
+      });
+    std::optional<Seed> seed;
+    if (!initial.empty())
+      {
+        const Point tip = initial.back(), behind = initial[initial.size() - 2];
+        seed            = Seed{tip, tip, (1. / geometry::norm(tip - behind)) * (tip - behind)};
+      }
     ExtractionSettings extraction;
     extraction.threshold = pd.crack_damage;
     extraction.horizon   = pd.horizon;
     const double length0 = geometry::length(initial);
 
     // Crack-mouth opening w: the relative displacement of two gauge nodes either side of the
-    // mouth, along the normal to the crack's first segment.
-    const Point mouth_dir = (1. / geometry::norm(initial[1] - initial[0])) * (initial[1] - initial[0]);
-    const Point       normal{mouth_dir.y, -mouth_dir.x};
-    const double      gauge       = p.gauge_distance > 0. ? p.gauge_distance : pd.horizon;
-    const std::size_t gauge_minus = nearest_node(model, initial[0] - gauge * normal);
-    const std::size_t gauge_plus  = nearest_node(model, initial[0] + gauge * normal);
-    const auto        mouth_opening = [&](const local::State &st) {
+    // mouth, along the normal to the crack's first segment (none without an initial crack).
+    Point       normal;
+    std::size_t gauge_minus = model.nodes().front(), gauge_plus = gauge_minus;
+    if (by_mouth)
+      {
+        const Point  mouth_dir = (1. / geometry::norm(initial[1] - initial[0])) * (initial[1] - initial[0]);
+        const double gauge     = p.gauge_distance > 0. ? p.gauge_distance : pd.horizon;
+        normal                 = {mouth_dir.y, -mouth_dir.x};
+        gauge_minus            = nearest_node(model, initial[0] - gauge * normal);
+        gauge_plus             = nearest_node(model, initial[0] + gauge * normal);
+      }
+    const auto mouth_opening = [&](const local::State &st) {
       return (st.ux[gauge_plus] - st.ux[gauge_minus]) * normal.x + (st.uy[gauge_plus] - st.uy[gauge_minus]) * normal.y;
     };
 
-    // Nodes near the initial tip: their stretch ratio decides the elastic jump (the pads' own
-    // stress concentrations do not).
+    // Nodes near the initial tip (without one: every node a crack may seed at): their stretch
+    // ratio decides the elastic jump (the pads' own stress concentrations do not).
     std::vector<std::size_t> near_tip;
     for (std::size_t i : model.nodes())
-      if (geometry::norm(model.lattice().position(i) - tip0) < 2. * pd.horizon)
+      if (seed ? geometry::norm(model.lattice().position(i) - seed->mouth) < 2. * pd.horizon : bool(seedable[i]))
         near_tip.push_back(i);
 
     Recorder recorder(scene);
@@ -328,6 +393,10 @@ namespace pumpd::coupling
         << " nodes), " << (drive.pad ? "a loading pad" : "lambda-scaled displacements") << ", no-fail radius "
         << p.no_fail_horizons * pd.horizon << " m (" << model.linear_bond_count()
         << " linear bonds); K_c = " << model.material().critical_sif() << " Pa m^1/2" << std::endl;
+    if (initial.empty())
+      out << "full PD: no initial crack: it is traced from where the damage first reaches the boundary, under "
+             "load-point control"
+          << std::endl;
 
     FullPdResult result;
     result.nodes   = model.nodes().size();
@@ -434,7 +503,17 @@ namespace pumpd::coupling
                 if (!traced.values.empty())
                   for (std::size_t k = 0; k < field.values.size(); ++k)
                     field.values[k] = std::max(field.values[k], traced.values[k]);
-                increment = extract_crack(field, tip0, dir0, extraction);
+                // Without an initial crack the seed follows the damage until the crack is a
+                // horizon long.
+                if (initial.empty() && length < pd.horizon)
+                  seed = seed_crack(model, field, seedable, pd.crack_damage, pd.horizon);
+                if (seed)
+                  {
+                    increment         = extract_crack(field, seed->start, seed->direction, extraction);
+                    increment.path[0] = seed->mouth;
+                  }
+                else
+                  increment = CrackIncrement{};
               }
             catch (const CrackBranching &e)
               {
@@ -477,10 +556,15 @@ namespace pumpd::coupling
           stop = "crack branching, refused: " + branching;
         else
           {
-            geometry::Polyline path = initial;
+            geometry::Polyline path = initial.empty() && !increment.path.empty() ? geometry::Polyline{increment.path[0]}
+                                                                                  : initial;
             for (std::size_t k = 1; k < increment.path.size(); ++k)
               path.push_back(increment.path[k]);
-            auto arrival = arrive(path, scene.body, settings.growth.hole_margin, pd.horizon, initial.size());
+            // A seeded crack's first segment leaves the boundary: from a hole's rim it is not an
+            // arrival at that hole.
+            const bool from_rim = initial.empty() && !path.empty() && scene.body.hole_clearance(path[0]) < 1e-3 * h;
+            auto arrival = arrive(path, scene.body, settings.growth.hole_margin, pd.horizon,
+                                  initial.empty() ? (from_rim ? 2 : 1) : initial.size());
             result.path  = arrival.path;
             stop         = arrival.reason;
           }
@@ -531,7 +615,7 @@ namespace pumpd::coupling
         step.lambda        = lambda_of(pad, s);
         std::tie(step.load, step.reported_displacement) = report(step.lambda, s);
         step.crack_length = length;
-        step.tip          = result.path.back();
+        step.tip          = result.path.empty() ? Point{} : result.path.back();
         step.seconds      = seconds_since(t_step);
         result.steps.push_back(step);
         table.row(n, pad, step.mouth_opening, step.lambda, step.load, step.reported_displacement, length, step.tip.x,
@@ -573,8 +657,8 @@ namespace pumpd::coupling
     for (const auto &st : result.steps)
       iterations += st.iterations;
     out << "end: " << result.stop_reason << "; crack " << geometry::length(result.path) << " m, tip at "
-        << to_text(result.path.back()) << ", control displacement " << pad << " m, " << result.steps.size()
-        << " steps, " << result.seconds << " s\n";
+        << (result.path.empty() ? std::string("none") : to_text(result.path.back())) << ", control displacement "
+        << pad << " m, " << result.steps.size() << " steps, " << result.seconds << " s\n";
     out << "pumpd-metric fullpd.nodes " << model.nodes().size() << "\n"
         << "pumpd-metric fullpd.node_steps " << result.node_steps << "\n"
         << "pumpd-metric fullpd.dr_iterations " << iterations << "\n"

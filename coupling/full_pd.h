@@ -18,7 +18,12 @@
 // Quasi-static states by dynamic relaxation at each d; after each state the crack is traced from
 // the initial tip (coupling::extract_crack) through the damage field, per node the largest damage
 // of the accepted states (the softening is elastic up to the break stretch, so bonds behind the
-// tip relax when the load falls after the peak; the crack they marked stays). The run stops where
+// tip relax when the load falls after the peak; the crack they marked stays). A scene without a
+// crack forms its own: it is traced from a mouth, the boundary point nearest the most damaged node
+// within a spacing of the boundary (damage at least the crack threshold, a horizon clear of the
+// prescribed regions and no-fail zones), along the direction to the damage-weighted centroid of
+// the crack nodes within three horizons of it; mouth and direction follow the damage until the
+// crack is a horizon long. Its steps are taken in d (the mouth is not known before it forms). The run stops where
 // the crack reaches a hole (within the hole margin) or the outline, stops growing for good, or d
 // reaches its maximum.
 //

@@ -27,6 +27,11 @@ namespace pumpd::coupling
                       "point force or a point support: the field of a point condition is singular, and the stress "
                       "the mesh gives next to it belongs to the idealisation of a contact as a point.",
                       dealii::Patterns::Double(0., 100.));
+    prm.add_parameter("First load factor", first_load_factor,
+                      "Global-local on a scene without a crack: lambda / lambda_i of the first PD state of the "
+                      "nucleation box at the first site (lambda_i: sigma_1 = sigma_s there); the states rise by the "
+                      "section Global-local's Load increment up to its Maximum load factor, both in units of lambda_i.",
+                      dealii::Patterns::Double(0.05, 1.));
     prm.leave_subsection();
   }
 

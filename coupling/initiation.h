@@ -35,11 +35,13 @@ namespace dealii
 
 namespace pumpd::coupling
 {
-  /// The section `Initiation`: which sites besides the first one to list.
+  /// The section `Initiation`: which sites besides the first one to list, and where the PD states
+  /// of a nucleation (nucleation.h) start.
   struct InitiationSettings
   {
-    double margin          = 0.1; ///< list the local maxima within this fraction of the largest ratio
-    double point_clearance = 2.;  ///< no site this many horizons (or cells) around a point condition
+    double margin            = 0.1; ///< list the local maxima within this fraction of the largest ratio
+    double point_clearance   = 2.;  ///< no site this many horizons (or cells) around a point condition
+    double first_load_factor = 0.8; ///< lambda / lambda_i of the first PD state of a nucleation
 
     void add_parameters(dealii::ParameterHandler &prm);
   };

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "error.h"
+#include "nucleation.h"
 
 namespace pumpd::coupling
 {
@@ -61,16 +62,20 @@ namespace pumpd::coupling
         return;
       }
     const Scene scene = build_scene(p.scene);
-    if (scene.cracks.empty())
+    if (scene.cracks.empty() && p.method == "global-local")
+      run_global_local_from_initiation(scene, p.global_local_settings(), p.initiation, out);
+    else if (scene.cracks.empty() && p.method == "lefm-growth")
       {
         report_initiation(find_initiation(scene, p.global, p.pd, p.initiation), scene, out);
         throw InvalidParameter("Initial cracks", "none",
-                               "growing a crack from an initiation site is not built yet: the candidate sites are "
-                               "listed above" +
-                                 std::string(scene.output_directory.empty() ? "" : " and in " + scene.output_directory + "/initiation_sites.csv") +
-                                 "; give the crack to grow as Initial cracks");
+                               "LEFM growth has no law for a crack to start (it grows a crack that is there): the "
+                               "candidate sites are listed above" +
+                                 std::string(scene.output_directory.empty()
+                                               ? ""
+                                               : " and in " + scene.output_directory + "/initiation_sites.csv") +
+                                 "; give the crack to grow as Initial cracks, or let global-local or full PD start one");
       }
-    if (p.method == "lefm-growth")
+    else if (p.method == "lefm-growth")
       run_lefm_growth(scene, p.lefm_growth_settings(), out);
     else if (p.method == "global-local")
       run_global_local(scene, p.global_local_settings(), out);

@@ -58,7 +58,9 @@ namespace pumpd::coupling
 
   /// Runs the method on the scene: builds the scene from the mesh, then calls run_lefm_growth,
   /// run_global_local, run_full_pd or run_edge_crack. Progress and a closing line to `out`. A
-  /// scene without a crack gets its initiation sites (initiation.h), printed and written, and
-  /// stops with InvalidParameter naming "Initial cracks": growth from a site is not built yet.
+  /// scene without a crack: global-local nucleates one at the first initiation site and grows it
+  /// (nucleation.h), full PD forms and traces its own; LEFM growth, which has no law for a crack
+  /// to start, prints the initiation sites (initiation.h) and stops with InvalidParameter naming
+  /// "Initial cracks".
   void run(const Parameters &parameters, std::ostream &out);
 } // namespace pumpd::coupling

@@ -167,3 +167,27 @@ TEST(FullPd, BadInputIsRefused)
   expect_invalid(run_with([](auto &p) { p.full_pd.support_radius = 0.001; p.full_pd.no_fail_horizons = 0.; }),
                  "pin", "holds no PD node");
 }
+
+// The L-panel without a pre-crack (prm/l-panel-initiation.prm) at delta = 16 mm, m = 2 (h = 8 mm,
+// ~2900 nodes): full PD forms its own crack, traced from the boundary point nearest the most damaged
+// node there (full_pd.h). Its mouth lies within a horizon of the re-entrant corner, the crack grows
+// to the left, into the panel, and not down into the held leg.
+TEST(FullPd, WithoutACrackTheLPanelCracksAtItsCorner)
+{
+  auto p                    = test::scene_file("prm/l-panel-initiation.prm", "full_pd_lpanel");
+  p.pd.horizon              = 0.016;
+  p.pd.horizon_over_spacing = 2;
+  p.full_pd.max_steps       = 60;
+  p.full_pd.output_interval = 1000;
+  std::ostringstream log;
+  const auto         r = run_case(p, log);
+  std::cout << log.str();
+  const geometry::Point corner{0.25, 0.25};
+  ASSERT_GE(r.path.size(), 2u);
+  const double mouth_err = geometry::norm(r.path.front() - corner) / p.pd.horizon;
+  std::cout << "path " << geometry::to_text(r.path) << " (" << r.stop_reason << ")\n";
+  test::metric("fullpd.lpanel.mouth_from_corner_over_delta", mouth_err);
+  EXPECT_LE(mouth_err, 1.);
+  EXPECT_LT(r.path.back().x, corner.x - 2. * p.pd.horizon);
+  EXPECT_GE(r.path.back().y, corner.y - p.pd.horizon);
+}
