@@ -131,10 +131,15 @@ namespace pumpd::global
     std::vector<Tensor<1, 2>> u;
     std::vector<Tensor<2, 2>> grad;
     const unsigned int        n = stride();
+    std::vector<std::pair<unsigned int, std::size_t>> all_tips; // (crack, tip), cracks in order
     for (unsigned int c = 0; c < cracks.size(); ++c)
-    for (std::size_t t = 0; t < cracks[c].tips().size(); ++t)
+      for (std::size_t t = 0; t < cracks[c].tips().size(); ++t)
+        all_tips.emplace_back(c, t);
+    for (const auto &crack_tip : all_tips)
       {
-        const Crack &crack = cracks[c];
+        const unsigned int c     = crack_tip.first;
+        const std::size_t  t     = crack_tip.second;
+        const Crack       &crack = cracks[c];
         const Tip   &tip   = crack.tips()[t];
         double       tip_radius = settings.tip_radius;
         for (unsigned int o = 0; o < cracks.size(); ++o)

@@ -4,6 +4,9 @@
 // - both cracks grow (their tips advance towards the middle of the plate);
 // - each path turns towards the other crack: the end of the left path lies above y = 0.04 (the
 //   right crack's side), the end of the right path below y = 0.06;
+// - the rule for simultaneous tips: in every step the tips that grow have lambda_c within the
+//   simultaneous growth tolerance of the step's smallest, the others wait; both cases occur (the
+//   tips grow together while the scene's half-turn symmetry holds, one waits afterwards);
 // - the run ends for a stated reason: a tip joins the other crack (its path then ends on the
 //   other crack's face), or a tip reaches the outline;
 // - crack_path.csv holds the left crack and crack_path_2.csv the right one.
@@ -56,6 +59,26 @@ TEST(OffsetPair, LefmGrowthTurnsTheTipsTowardsEachOther)
   EXPECT_GT(right.size(), 3u) << "the right crack grew";
   EXPECT_GT(left.back().x, 0.07 + 0.01);
   EXPECT_LT(right.back().x, 0.13 - 0.01);
+
+  // Simultaneous tips: grow within the tolerance of the smallest lambda_c, wait above it.
+  const double tolerance = p.lefm.simultaneous_tolerance;
+  bool         together = false, waited = false;
+  for (std::size_t k = 0; k + 1 < result.steps.size(); k += 2)
+    {
+      const auto &a = result.steps[k], &b = result.steps[k + 1];
+      ASSERT_EQ(a.step, b.step);
+      const double smallest = std::min(a.critical_load_factor, b.critical_load_factor);
+      for (const auto *tip : {&a, &b})
+        {
+          const bool critical = tip->critical_load_factor <= smallest * (1. + tolerance);
+          if (a.step < p.lefm.max_steps) // at the last step allowed no tip grows
+            EXPECT_EQ(tip->increment > 0., critical) << "step " << tip->step << ", tip " << tip->tip;
+        }
+      together |= a.increment > 0. && b.increment > 0.;
+      waited |= (a.increment > 0.) != (b.increment > 0.);
+    }
+  EXPECT_TRUE(together);
+  EXPECT_TRUE(waited);
 
   // Turned towards the other crack.
   const double left_turn = left.back().y - 0.04, right_turn = 0.06 - right.back().y;

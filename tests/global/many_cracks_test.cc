@@ -19,6 +19,12 @@
 //     plate alone: K_I = sigma sqrt(pi a) cos^2 beta, K_II = sigma sqrt(pi a) sin beta cos beta
 //     (as the single inclined crack of sif_test.cc); tolerance 2 % on K_I, and on K_II of the
 //     inclined crack (|K_II| < 1 % of K_I for the straight one), at the four tips.
+// (c) Cells cut by two cracks: two parallel edge cracks from the left edge of [-1, 1]^2, 0.04 apart
+//     (y = 0.03 and 0.07, tips at x = 0.13), on the 20 x 20 mesh (cells of 0.1: every cell of the
+//     row 0 < y < 0.1 along the cracks is cut by both) and on the same mesh refined 3 more times along the cracks (cells of 0.0125:
+//     none is cut by both); both with cells of 0.1 / 16 within 0.1 of the tips. The strain energy and
+//     K_I at both tips agree within 2 % (a cell integrated on the pieces of one crack only would
+//     close the other crack along it).
 // The meshes are stretched by a smooth map (tips at generic positions relative to the mesh lines)
 // and refined near the cracks and 3 more times within 0.15 of each tip (cells of a / 32 there).
 // Prints pumpd-metric global.many_cracks_max_rel_err: the worst relative K_I error of (a) and (b).
@@ -106,6 +112,41 @@ namespace
     if (!vtu.empty())
       problem.write_vtu(vtu);
     return {problem.stress_intensity_factors(), problem.n_dofs(), problem.n_heaviside_nodes(), problem.n_tip_nodes()};
+  }
+
+  /// Case (c): {strain energy, K_I tip 1, K_I tip 2, number of cells cut by both cracks} of the
+  /// two parallel edge cracks, the band along them refined `band_levels` (at most 4) times.
+  std::array<double, 4> parallel_edge_cracks(unsigned int band_levels)
+  {
+    dealii::Triangulation<2> tria;
+    dealii::GridGenerator::subdivided_hyper_rectangle(tria, {20, 20}, dealii::Point<2>(-1., -1.),
+                                                      dealii::Point<2>(1., 1.), true);
+    const std::vector<geometry::Polyline> lines = {{{-1., 0.03}, {0.13, 0.03}}, {{-1., 0.07}, {0.13, 0.07}}};
+    std::vector<geometry::Point>          band;
+    for (int k = 0; k <= 110; ++k)
+      band.push_back({-1. + 0.01 * k, 0.05});
+    refine_near(tria, band, 0.05, band_levels);
+    refine_near(tria, {{0.13, 0.03}, {0.13, 0.07}}, 0.1, 4 - band_levels);
+    unsigned int both = 0;
+    for (const auto &cell : tria.active_cell_iterators())
+      {
+        const double x = cell->center()[0], h = 0.5 * cell->extent_in_direction(1);
+        both += x < 0.13 && cell->center()[1] - h < 0.03 && cell->center()[1] + h > 0.07;
+      }
+    const geometry::Body body{{-1., -1., 1., 1.}, {}};
+    EnrichmentSettings   settings;
+    settings.tip_radius = 0.1;
+    EnrichedElasticity problem(tria, material, settings);
+    problem.set_cracks({Crack(lines[0], body, 1e-12), Crack(lines[1], body, 1e-12)});
+    problem.add_traction(3, [](geometry::Point) { return geometry::Point{0., 1.}; });
+    problem.add_traction(2, [](geometry::Point) { return geometry::Point{0., -1.}; });
+    problem.add_dirichlet_vertex({1., -1.}, {0., 0.});
+    problem.add_dirichlet_vertex({1., 1.}, {0., 0.}, true, false);
+    problem.setup();
+    problem.assemble();
+    problem.solve();
+    const auto sif = problem.stress_intensity_factors();
+    return {{problem.strain_energy(), sif.at(0).k1, sif.at(1).k1, double(both)}};
   }
 
   /// Tada, Paris & Irwin's two equal collinear cracks, faces at d < |x| < c: {K_inner, K_outer} / sigma.
@@ -212,4 +253,19 @@ TEST(GlobalManyCracks, FarApartCracksEachMatchTheInfinitePlate)
       worst = std::max(worst, std::abs(e1));
     }
   worst_far = worst;
+}
+
+TEST(GlobalManyCracks, CellsCutByTwoCracksIntegrateAsFinerCells)
+{
+  const auto coarse = parallel_edge_cracks(0), fine = parallel_edge_cracks(3);
+  std::cout << "parallel edge cracks 0.04 apart: cells cut by both " << coarse[3] << " (coarse), " << fine[3]
+            << " (fine)\n";
+  const char *name[] = {"strain energy", "K_I lower tip", "K_I upper tip"};
+  for (int i = 0; i < 3; ++i)
+    {
+      std::cout << "  " << name[i] << ": " << coarse[i] << " on cells cut by both, " << fine[i] << " on finer cells\n";
+      EXPECT_LT(std::abs(coarse[i] / fine[i] - 1.), 0.02) << name[i];
+    }
+  EXPECT_GT(coarse[3], 5.);
+  EXPECT_EQ(fine[3], 0.);
 }
