@@ -1,5 +1,5 @@
 // Offset pair of edge cracks under tension (prm/offset-pair.prm, meshes/offset-pair.geo): LEFM
-// growth of two cracks. The left crack runs from the left edge at y = 0.04, the right one from the
+// growth of two cracks (the global-local cycle's test is at the end). The left crack runs from the left edge at y = 0.04, the right one from the
 // right edge at y = 0.06; the top edge is pulled, the bottom held. Checked:
 // - both cracks grow (their tips advance towards the middle of the plate);
 // - each path turns towards the other crack: the end of the left path lies above y = 0.04 (the
@@ -20,10 +20,13 @@
 #include <filesystem>
 #include <iostream>
 #include <limits>
+#include <sstream>
 
 #include "csv.h"
 #include "geometry.h"
+#include "global_local.h"
 #include "lefm_growth.h"
+#include "path_metrics.h"
 #include "metric.h"
 #include "scene_file.h"
 
@@ -113,4 +116,42 @@ TEST(OffsetPair, LefmGrowthTurnsTheTipsTowardsEachOther)
   test::metric("cracks.offset_pair.right_turn_mm", 1e3 * right_turn);
   test::metric("cracks.offset_pair.joined", joined ? 1. : 0.);
   test::metric("cracks.offset_pair.increments", double(result.increments));
+}
+
+// The global-local cycle on the same scene (a PD box per tip, m = 4): both cracks grow and turn
+// towards each other, and the run ends when one joins the other (a tip within a horizon of the
+// other crack's face joins it there) or reaches the outline. Prints
+// cracks.offset_pair.gl_left_turn_mm, .gl_right_turn_mm, .gl_joined, and the mean distance of each
+// global-local path from LEFM growth's over their common extent (.gl_vs_lefm_mean_mm, the larger
+// of the two cracks'): the two methods' answers on one scene.
+TEST(OffsetPair, GlobalLocalTurnsTheTipsTowardsEachOther)
+{
+  auto lefm        = test::scene_file("prm/offset-pair.prm", "offset_pair_lefm");
+  const auto scene = coupling::build_scene(lefm.scene);
+  std::ostringstream lefm_log;
+  const auto         l = coupling::run_lefm_growth(scene, lefm.lefm_growth_settings(), lefm_log);
+
+  auto gl                    = test::scene_file("prm/offset-pair.prm", "offset_pair_global_local");
+  gl.pd.horizon_over_spacing = 4;
+  const auto r               = coupling::run_global_local(coupling::build_scene(gl.scene), gl.global_local_settings(), std::cout);
+  ASSERT_EQ(r.paths.size(), 2u);
+  const auto &left = r.paths[0], &right = r.paths[1];
+  EXPECT_GT(left.back().x, 0.07 + 0.01);
+  EXPECT_LT(right.back().x, 0.13 - 0.01);
+  const double h          = gl.pd.spacing();
+  const double left_turn  = left.back().y - 0.04, right_turn = 0.06 - right.back().y;
+  EXPECT_GT(left_turn, 2. * h);
+  EXPECT_GT(right_turn, 2. * h);
+  const bool joined = r.stop_reason.find("joined crack") != std::string::npos;
+  if (joined)
+    EXPECT_LT(std::min(distance(left.back(), right), distance(right.back(), left)), 1e-9);
+  else
+    EXPECT_NE(r.stop_reason.find("reached the outline"), std::string::npos) << r.stop_reason;
+  double mean = 0.;
+  for (std::size_t c = 0; c < 2; ++c)
+    mean = std::max(mean, coupling::trade_distance(r.paths[c], l.paths[c]).mean);
+  test::metric("cracks.offset_pair.gl_left_turn_mm", 1e3 * left_turn);
+  test::metric("cracks.offset_pair.gl_right_turn_mm", 1e3 * right_turn);
+  test::metric("cracks.offset_pair.gl_joined", joined ? 1. : 0.);
+  test::metric("cracks.offset_pair.gl_vs_lefm_mean_mm", 1e3 * mean);
 }
