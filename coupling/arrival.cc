@@ -1,5 +1,7 @@
 #include "arrival.h"
 
+#include <algorithm>
+
 namespace pumpd::coupling
 {
   using geometry::Point;
@@ -41,5 +43,64 @@ namespace pumpd::coupling
           }
       }
     return {path, ""};
+  }
+
+  std::pair<double, std::size_t> ray_to_cracks(geometry::Point from, geometry::Point e, double t_max,
+                                               const std::vector<geometry::Polyline> &cracks, std::size_t skip)
+  {
+    std::pair<double, std::size_t> best{std::numeric_limits<double>::infinity(), skip};
+    for (std::size_t c = 0; c < cracks.size(); ++c)
+      {
+        if (c == skip)
+          continue;
+        const auto &v = cracks[c];
+        for (std::size_t k = 0; k + 1 < v.size(); ++k)
+          {
+            // from + t e = v_k + u f,  t in [0, t_max], u in [0, 1]
+            const geometry::Point f   = v[k + 1] - v[k];
+            const double          den = geometry::cross(e, f);
+            if (den == 0.)
+              continue;
+            const double t = geometry::cross(v[k] - from, f) / den, u = geometry::cross(v[k] - from, e) / den;
+            if (t >= 0. && t <= t_max && u >= 0. && u <= 1. && t < best.first)
+              best = {t, c};
+          }
+      }
+    return best;
+  }
+
+  std::optional<CrackMeeting> first_crossing(const geometry::Polyline &path,
+                                             const std::vector<geometry::Polyline> &cracks, std::size_t own)
+  {
+    for (std::size_t k = 0; k + 1 < path.size(); ++k)
+      {
+        const geometry::Point e = path[k + 1] - path[k];
+        if (const auto [t, c] = ray_to_cracks(path[k], e, 1., cracks, own); t <= 1.)
+          return CrackMeeting{c, k, path[k] + t * e};
+      }
+    return std::nullopt;
+  }
+
+  std::optional<CrackMeeting> face_ahead(const geometry::Polyline &path, const std::vector<geometry::Polyline> &cracks,
+                                         std::size_t own, double reach)
+  {
+    const geometry::Point       tip = path.back(), d = tip - path[path.size() - 2];
+    std::optional<CrackMeeting> nearest;
+    double                      least = reach;
+    for (std::size_t c = 0; c < cracks.size(); ++c)
+      for (std::size_t j = 0; j + 1 < cracks[c].size(); ++j)
+        {
+          if (c == own)
+            break;
+          const geometry::Point a = cracks[c][j], w = cracks[c][j + 1] - a;
+          const double          t = std::clamp(geometry::dot(tip - a, w) / geometry::dot(w, w), 0., 1.);
+          const geometry::Point q = a + t * w;
+          if (const double r = geometry::norm(q - tip); r < least && geometry::dot(q - tip, d) > 0.)
+            {
+              least   = r;
+              nearest = CrackMeeting{c, path.size() - 1, q};
+            }
+        }
+    return nearest;
   }
 } // namespace pumpd::coupling

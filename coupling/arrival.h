@@ -1,8 +1,12 @@
-// Where a growing crack path ends its growth (every method): at a hole or at the outline.
+// Where a growing crack path ends its growth (every method): at a hole or at the outline, or on
+// another crack's face (it joins that crack there).
 #pragma once
 
 #include <cstddef>
+#include <limits>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "body.h"
 
@@ -21,4 +25,26 @@ namespace pumpd::coupling
   /// close has reached it.
   Arrival arrive(geometry::Polyline path, const geometry::Body &body, double margin, double reach,
                  std::size_t first_new = 0, double hole_reach = 0.);
+
+  /// Where a growing tip meets another crack: that crack's index, the point on its face, and the
+  /// index of the path segment that reaches it.
+  struct CrackMeeting
+  {
+    std::size_t     crack = 0, segment = 0;
+    geometry::Point at;
+  };
+
+  /// The first point where from + t e (0 <= t <= t_max) meets a crack other than `skip`: (t, crack),
+  /// or (infinity, skip).
+  std::pair<double, std::size_t> ray_to_cracks(geometry::Point from, geometry::Point e, double t_max,
+                                               const std::vector<geometry::Polyline> &cracks, std::size_t skip);
+
+  /// Where the path first crosses a crack other than `own`, if it does.
+  std::optional<CrackMeeting> first_crossing(const geometry::Polyline &path,
+                                             const std::vector<geometry::Polyline> &cracks, std::size_t own);
+
+  /// The nearest point of a crack other than `own` within `reach` of the path's end and ahead of
+  /// its last segment (segment: the last), if there is one.
+  std::optional<CrackMeeting> face_ahead(const geometry::Polyline &path, const std::vector<geometry::Polyline> &cracks,
+                                         std::size_t own, double reach);
 } // namespace pumpd::coupling

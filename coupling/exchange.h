@@ -1,9 +1,10 @@
 // The scheme of one global-local exchange (preCICE's CouplingScheme::advance): quasi-static PD
 // states of one box along the load factor, each judged by the ExchangeController (raise the load,
 // repeat a too-long advance with half the increment, accept), the crack increment of each tip in
-// the box read off each state's damage (CrackExtractor). The controller judges the tip that has
-// gone farthest against its allowed advance, so the box's tips grow at one load. Each state starts from the secant through the last two
-// equilibria of the exchange (first-order continuation in the load factor).
+// the box read off each state's damage (CrackExtractor). The controller judges the tip with the
+// largest advance relative to its allowed advance, so the box's tips grow at one load. Each state
+// starts from the secant through the last two equilibria of the exchange (first-order
+// continuation in the load factor).
 #pragma once
 
 #include <cstddef>

@@ -74,7 +74,8 @@ namespace pumpd::coupling
                       Patterns::Bool());
     prm.add_parameter("Box threshold", box_threshold,
                       "A tip gets a PD box when its G / G_c is at least this at the load where the first tip reaches "
-                      "G = G_c (G grows with the load squared); a tip below it waits, modelled by the enrichment alone.",
+                      "G = G_c (G grows with the load squared); a tip below it waits, modelled by the enrichment "
+                      "alone.",
                       Patterns::Double(1e-3, 1.));
     prm.add_parameter("Maximum exchanges", max_exchanges, "Global-local exchanges at most.", Patterns::Integer(1));
     prm.add_parameter("Reference box area", reference_box_area,
@@ -196,7 +197,7 @@ namespace pumpd::coupling
     /// decision on it; the PD body and its last state where the tip leads a box.
     struct TipExchange
     {
-      std::size_t                   track = 1; ///< 2 crack + end
+      std::size_t                   track = 0; ///< 2 crack + end
       TipState                      tip;
       ExchangeRecord                record;
       geometry::Polyline            increment; ///< from the tip
@@ -235,6 +236,15 @@ namespace pumpd::coupling
       /// The box around its tips and the PD body in it (the whole crack as broken bonds), at the
       /// finest horizon its tips' resolution asks for.
       void pd_body(const std::vector<std::size_t> &box, std::vector<TipExchange> &parts);
+      /// The track whose box policy and controller a box uses: the lowest of its tips', so that
+      /// a shared box keeps one history while the tip with the smallest lambda_c may change.
+      std::size_t owner(const std::vector<std::size_t> &box, const std::vector<TipExchange> &parts) const
+      {
+        std::size_t t = parts[box.front()].track;
+        for (std::size_t m : box)
+          t = std::min(t, parts[m].track);
+        return t;
+      }
       /// The mapping of the global displacement onto the body's nodes.
       BoundaryTransfer transfer_to(TipExchange &lead);
       /// The PD states along the load until the crack grows at a tip of the box (exchange.h).
@@ -255,16 +265,6 @@ namespace pumpd::coupling
       void grow_by_lefm(TipExchange &part);
       /// The files for people and the checkpoint; a progress line per tip.
       void write(std::size_t n, const std::vector<TipExchange> &parts, const std::string &stop);
-      /// Where a path first crosses a crack other than `own`: that crack, the path's segment, the point.
-      struct Crossing
-      {
-        std::size_t     crack = 0, segment = 0;
-        geometry::Point at;
-      };
-      std::optional<Crossing> first_crossing(const geometry::Polyline &path, std::size_t own) const;
-      /// The nearest point of a crack other than `own` within `reach` of the path's end and ahead
-      /// of its last segment (the path's last segment index with it).
-      std::optional<Crossing> face_ahead(const geometry::Polyline &path, std::size_t own, double reach) const;
       /// The result: path, boxes, distances from the reference path; the summary metrics.
       GlobalLocalResult finish();
 
@@ -373,7 +373,8 @@ namespace pumpd::coupling
       length0 = crack_length();
       out << "global-local: " << scene.mesh_file << ", " << scene.body.holes().size() << " holes, "
           << cracks.size() << (cracks.size() == 1 ? " crack " : " cracks ") << crack_length() << " m with "
-          << tips.size() << (tips.size() == 1 ? " tip" : " tips") << "; PD delta " << s.pd.horizon << " m, m = " << s.pd.horizon_over_spacing << ", box " << s.cycle.box.size
+          << tips.size() << (tips.size() == 1 ? " tip" : " tips") << "; PD delta " << s.pd.horizon
+          << " m, m = " << s.pd.horizon_over_spacing << ", box " << s.cycle.box.size
           << " m; K_c = " << scene.material.critical_sif() << " Pa m^1/2\n";
     }
 
@@ -500,7 +501,7 @@ namespace pumpd::coupling
           part.record.critical_load_factor   = part.tip.critical_load_factor;
           part.record.dofs                   = global.n_dofs();
           part.record.enriched_dofs          = global.n_enriched_dofs();
-          part.record.seconds_global         = solved / double(states.size());
+          part.record.seconds_global         = parts.empty() ? solved : 0.;
           part.record.predicted_kink         = kink_angle(part.tip.k1, part.tip.k2);
           parts.push_back(std::move(part));
         }
@@ -511,7 +512,8 @@ namespace pumpd::coupling
     {
       auto        &track     = tracks[part.track];
       const double reach     = s.cycle.exchange.max_advance + s.pd.horizon;
-      const double clearance = std::min(clearance_ahead(scene.body, part.tip.position, part.tip.direction, reach, 0.5 * h),
+      const double clearance =
+        std::min(clearance_ahead(scene.body, part.tip.position, part.tip.direction, reach, 0.5 * h),
                                         track.boxes.smallest_hole_within_reach(part.tip.position, part.tip.direction));
       track.halvings         = horizon_halvings(s.cycle.resolution, s.pd.horizon, clearance);
       track.pd.horizon       = track.length_scale() * s.pd.horizon;
@@ -563,7 +565,7 @@ namespace pumpd::coupling
           tips.push_back(parts[m].tip.position);
           directions.push_back(parts[m].tip.direction);
         }
-      auto &track     = tracks[lead.track];
+      auto &track     = tracks[owner(box, parts)];
       lead.record.box = track.boxes.place(tips, directions, track.length_scale());
       lead.model.emplace(material, track.pd.horizon, track.pd.horizon_over_spacing,
                          local::Region{scene.body, lead.record.box, polylines()});
@@ -589,7 +591,7 @@ namespace pumpd::coupling
                          std::vector<TipExchange> &parts)
     {
       TipExchange          &lead  = parts[box.front()];
-      auto                 &track = tracks[lead.track];
+      auto                 &track = tracks[owner(box, parts)];
       const double          scale = track.length_scale();
       std::vector<TipState> tips;
       std::vector<double>   allowed;
@@ -612,8 +614,14 @@ namespace pumpd::coupling
           auto &record = part.record;
           if (k < outcome.increments.size())
             part.increment = truncate(outcome.increments[k].path, allowed[k]);
-          part.decision             = outcome.decision;
-          part.branching            = outcome.branching;
+          part.decision  = outcome.decision;
+          part.branching = outcome.branching;
+          // The controller judged the tip that went farthest; another tip of the box grows with it
+          // only by an advance the controller would accept on its own.
+          const bool below = geometry::length(part.increment) <
+                             std::min(s.cycle.exchange.min_advance, 0.5 * allowed[k]) * (1. - 1e-12);
+          if (part.decision == Decision::accept && below && part.branching.empty())
+            part.decision = Decision::raise;
           record.pd_iterations      = outcome.iterations;
           record.substeps           = outcome.states;
           record.repeats            = outcome.repeats;
@@ -621,7 +629,9 @@ namespace pumpd::coupling
           record.load_factor        = lambda / part.tip.critical_load_factor;
           record.k1                 = part.tip.k1 * lambda;
           record.k2                 = part.tip.k2 * lambda;
-          record.decision           = outcome.branching.empty() ? to_text(outcome.decision) : "branching";
+          record.decision           = !outcome.branching.empty()     ? "branching" :
+                                      part.decision == Decision::raise ? "no growth" :
+                                                                         to_text(part.decision);
         }
       lead.record.seconds_pd         = outcome.seconds_pd;
       lead.record.seconds_extraction = outcome.seconds_extraction;
@@ -660,10 +670,12 @@ namespace pumpd::coupling
                                        lambda + s.cycle.exchange.load_increment * part.tip.critical_load_factor;
           if (!part.grows)
             {
-              part.record.decision = "waits";
+              if (grew(part))
+                part.record.decision = "waits";
               continue;
             }
           const double before = crack_length();
+          part.increment      = truncate(part.increment, max_length - before);
           const auto  &path   = part.increment;
           grow_tip(part);
           part.record.advance = crack_length() - before;
@@ -702,9 +714,10 @@ namespace pumpd::coupling
       const auto        arrival = arrival_of(part.increment, horizon);
       // Another crack's face met by the increment, or within a horizon ahead of the new tip (a
       // ligament PD does not resolve, as at a hole): the tip joins that crack there.
-      auto face = first_crossing(arrival.path, track / 2);
+      const auto others = polylines();
+      auto       face   = first_crossing(arrival.path, others, track / 2);
       if (!face && arrival.reason.empty() && arrival.path.size() > 1)
-        face = face_ahead(arrival.path, track / 2, horizon);
+        face = face_ahead(arrival.path, others, track / 2, horizon);
       auto &crack = cracks[track / 2];
       for (std::size_t k = 1; k < arrival.path.size() && (!face || k <= face->segment); ++k)
         if (geometry::norm(arrival.path[k] - end_vertex(track)) > 1e-3 * h)
@@ -718,58 +731,6 @@ namespace pumpd::coupling
       part.joined = true;
       part.stop   = "crack " + std::to_string(track / 2 + 1) + " joined crack " + std::to_string(face->crack + 1) +
                   " at " + to_text(face->at);
-    }
-
-    std::optional<Cycle::Crossing> Cycle::face_ahead(const geometry::Polyline &path, std::size_t own,
-                                                     double reach) const
-    {
-      const Point             tip = path.back(), d = tip - path[path.size() - 2];
-      std::optional<Crossing> nearest;
-      double                  least = reach;
-      for (std::size_t c = 0; c < cracks.size(); ++c)
-        {
-          const auto &v = cracks[c].vertices();
-          for (std::size_t j = 0; c != own && j + 1 < v.size(); ++j)
-            {
-              const Point  w = v[j + 1] - v[j];
-              const double t = std::clamp(geometry::dot(tip - v[j], w) / geometry::dot(w, w), 0., 1.);
-              const Point  q = v[j] + t * w;
-              if (const double r = norm(q - tip); r < least && geometry::dot(q - tip, d) > 0.)
-                {
-                  least   = r;
-                  nearest = Crossing{c, path.size() - 1, q};
-                }
-            }
-        }
-      return nearest;
-    }
-
-    std::optional<Cycle::Crossing> Cycle::first_crossing(const geometry::Polyline &path, std::size_t own) const
-    {
-      std::optional<Crossing> first;
-      double                  nearest = std::numeric_limits<double>::infinity();
-      for (std::size_t k = 0; k + 1 < path.size() && !first; ++k)
-        for (std::size_t c = 0; c < cracks.size(); ++c)
-          {
-            if (c == own)
-              continue;
-            const auto &v = cracks[c].vertices();
-            for (std::size_t j = 0; j + 1 < v.size(); ++j)
-              {
-                // p + t r = q + u w, t, u in [0, 1]
-                const Point  p = path[k], r = path[k + 1] - path[k], q = v[j], w = v[j + 1] - v[j];
-                const double d = geometry::cross(r, w);
-                if (d == 0.)
-                  continue;
-                const double t = geometry::cross(q - p, w) / d, u = geometry::cross(q - p, r) / d;
-                if (t >= 0. && t <= 1. && u >= 0. && u <= 1. && t * geometry::norm(r) < nearest)
-                  {
-                    nearest = t * geometry::norm(r);
-                    first   = Crossing{c, k, p + t * r};
-                  }
-              }
-          }
-      return first;
     }
 
     bool Cycle::ligament_unresolved(const TipState &tip) const
@@ -806,11 +767,13 @@ namespace pumpd::coupling
           result.exchanges.push_back(part.record);
           write_row(steps, part.record);
         }
+      // The exchange's load (grow() left the global solution there) and the tip that grew first.
       for (const auto &part : parts)
         if (part.grows)
           {
-            recorder.load_displacement(n, part.record.lambda, part.record.load, part.record.displacement,
-                                       crack_length(), cracks.front().vertices().back());
+            const auto [load, displacement] = global.report();
+            recorder.load_displacement(n, global.load_factor(), load, displacement, crack_length(),
+                                       end_vertex(part.track));
             break;
           }
       if (n % s.cycle.output_interval == 0 || last)
@@ -823,7 +786,7 @@ namespace pumpd::coupling
       recorder.crack_paths(polylines());
       if (recorder.writes())
         {
-          CsvFile boxes_table(recorder.path("boxes.csv"), "exchange,x_min_m,y_min_m,x_max_m,y_max_m,moved,tip_end,crack");
+          CsvFile boxes_table(recorder.path("boxes.csv"), "box,x_min_m,y_min_m,x_max_m,y_max_m,moved,tip_end,crack");
           state.exchanges = n + 1;
           state.finished  = !stop.empty();
           state.cracks    = polylines();
@@ -870,7 +833,7 @@ namespace pumpd::coupling
                 << " horizons of the finest box)";
           else
             out << "in the box of tip " << parts[part.box].track % 2;
-          if (!part.grows && part.decision != Decision::too_small)
+          if (part.record.decision == "waits")
             out << "  waits: grew above this exchange's load";
           if (!part.stop.empty() && !last)
             out << "  stops: " << part.stop;

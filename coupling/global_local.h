@@ -1,13 +1,14 @@
 // The global-local cycle (DESIGN.md, "Data flow of one exchange"; reference Sections 3-4):
-// enriched global elasticity drives a PD box at the crack tip, the PD damage grows the crack, the
-// extracted path goes back into the global enrichment, and the box follows the tip. One exchange:
-//  1. the resolution rule (resolution.h) picks the horizon of this exchange's box from the holes
-//     and edges ahead of the tip; the global problem (global_problem.h), refined at the tip to
-//     match it: XFEM solve of the scene at lambda = 1, K_I, K_II at the tip and the critical load
-//     factor lambda_c (G = G_c): the load is chosen by the code;
-//  2. BoxPolicy places the PD box; the PD body carries the whole crack behind the tip as broken
-//     bonds, the body's holes and free edges; the boundary transfer (boundary_transfer.h) maps
-//     the global displacement per unit load onto its nodes, once per box;
+// enriched global elasticity drives a PD box at each crack tip, the PD damage grows the cracks,
+// the extracted paths go back into the global enrichment, and the boxes follow the tips. One
+// exchange:
+//  1. the global problem (global_problem.h), refined at every tip: XFEM solve of the scene at
+//     lambda = 1, K_I, K_II and the critical load factor lambda_c (G = G_c) at every tip: the load
+//     is chosen by the code; the resolution rule (resolution.h) picks the horizon of each tip's
+//     box from the holes and edges ahead of it;
+//  2. BoxPolicy places the PD boxes; each PD body carries every crack as broken bonds, the
+//     body's holes and free edges; the boundary transfer (boundary_transfer.h) maps the global
+//     displacement per unit load onto its nodes, once per box;
 //  3. the exchange (exchange.h): quasi-static PD states along lambda, the ExchangeController
 //     raising, repeating or accepting as the extracted advance dictates;
 //  4. the increment grows the crack; a tip that reaches a hole (within the hole margin) or the

@@ -11,6 +11,7 @@
 #include <optional>
 #include <ostream>
 
+#include "arrival.h"
 #include "crack.h"
 #include "error.h"
 #include "path_metrics.h"
@@ -61,29 +62,12 @@ namespace pumpd::coupling
       std::string reason;
     };
 
-    /// The first point where from + t e (t >= 0, at most t_max) meets a crack other than `skip`:
-    /// (t, crack), or (infinity, skip).
-    std::pair<double, std::size_t> ray_to_cracks(Point from, Point e, double t_max,
-                                                 const std::vector<global::Crack> &cracks, std::size_t skip)
+    std::vector<geometry::Polyline> polylines(const std::vector<global::Crack> &cracks)
     {
-      std::pair<double, std::size_t> best{std::numeric_limits<double>::infinity(), skip};
-      for (std::size_t c = 0; c < cracks.size(); ++c)
-        {
-          if (c == skip)
-            continue;
-          const auto &v = cracks[c].vertices();
-          for (std::size_t k = 0; k + 1 < v.size(); ++k)
-            {
-              const Point  f   = v[k + 1] - v[k];
-              const double den = geometry::cross(e, f);
-              if (den == 0.)
-                continue;
-              const double t = geometry::cross(v[k] - from, f) / den, u = geometry::cross(v[k] - from, e) / den;
-              if (t >= 0. && t <= t_max && u >= 0. && u <= 1. && t < best.first)
-                best = {t, c};
-            }
-        }
-      return best;
+      std::vector<geometry::Polyline> p;
+      for (const auto &c : cracks)
+        p.push_back(c.vertices());
+      return p;
     }
 
     /// Where tip grows by the increment da / (1 + |theta_c| / halving angle), at most `remaining`:
@@ -108,7 +92,7 @@ namespace pumpd::coupling
       const Point  e      = std::cos(g.angle) * tip.direction + std::sin(g.angle) * n;
       const double t_out  = body.ray_to_outline(tip.position, e);
       const double t_hole = body.ray_to_holes(tip.position, e, s.growth.hole_margin).t;
-      const auto [t_face, other] = ray_to_cracks(tip.position, e, look_ahead * da, cracks, g.crack);
+      const auto [t_face, other] = ray_to_cracks(tip.position, e, look_ahead * da, polylines(cracks), g.crack);
       if (t_face <= look_ahead * da && t_face < t_out && t_face < t_hole)
         {
           g.to     = tip.position + t_face * e;
@@ -278,7 +262,7 @@ namespace pumpd::coupling
             auto      &crack = cracks[g->crack];
             const auto tip   = crack.tips()[g->tip];
             if (g->grow && !g->joins)
-              if (const auto [t, other] = ray_to_cracks(tip.position, g->to - tip.position, 1., cracks, g->crack);
+              if (const auto [t, other] = ray_to_cracks(tip.position, g->to - tip.position, 1., polylines(cracks), g->crack);
                   t <= 1.)
                 {
                   g->to     = tip.position + t * (g->to - tip.position);

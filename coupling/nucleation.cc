@@ -24,10 +24,7 @@ namespace pumpd::coupling
   {
     /// The no-fail band along the boundary layer [horizons] (header comment, 2).
     const double layer_clearance = 2.;
-  } // namespace
 
-  namespace
-  {
     /// The point of a boundary piece nearest p.
     Point nearest_on(const geometry::Piece &piece, Point p)
     {
@@ -127,9 +124,9 @@ namespace pumpd::coupling
       throw InvalidParameter("Initial cracks", "none",
                              "the first initiation site " + geometry::to_text(site) + " lies " + pumpd::to_text(depth, 4) +
                                " m inside the body, more than a horizon (" + pumpd::to_text(horizon, 4) +
-                               " m) from its outline and holes: a crack starting there would have two tips, and the "
-                               "global-local cycle grows a crack with one (from a mouth on the boundary); give the "
-                               "crack to grow as Initial cracks");
+                               " m) from its outline and holes: a crack starting there would have two tips, and "
+                               "nucleation forms edge cracks only (from a mouth on the boundary); give the crack to "
+                               "grow as Initial cracks");
     return nearest_boundary_point(body, site);
   }
 

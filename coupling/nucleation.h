@@ -2,8 +2,8 @@
 // first initiation site (initiation.h) is loaded by the uncracked body's displacement until its
 // damage forms a crack, which then grows as an initial crack would.
 //  1. The mouth: the point of the outline or a hole's rim nearest the site, which must lie within
-//     a horizon of it (a site deeper inside would start a crack with two tips, which the one-tip
-//     cycle cannot grow: refused). The crack opens against sigma_1: it leaves the mouth along
+//     a horizon of it (a site deeper inside would start an interior crack with two tips, which
+//     nucleation does not form: refused). The crack opens against sigma_1: it leaves the mouth along
 //     t perpendicular to sigma_1's direction, the sense that leads into the material.
 //  2. The PD box: BoxPolicy's box centred at the mouth (clipped to the body, grown to take in a
 //     nearby hole), a side of at least 2 (3 delta + Maximum advance) so that the longest crack

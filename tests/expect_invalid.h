@@ -1,5 +1,6 @@
 // The check every bad-input test makes: f must throw pumpd::InvalidParameter whose what() starts
-// with "<name> = " and contains `allowed` (the parameter named, then its allowed range).
+// with "<name> = " and contains `allowed` (the parameter named, then its allowed range); and the
+// message itself, for tests that read figures out of it.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -31,5 +32,19 @@ namespace pumpd::test
         ADD_FAILURE() << "wrong exception type; expected InvalidParameter naming \"" << name
                       << "\", got: " << e.what();
       }
+  }
+
+  /// The message of the InvalidParameter f throws; "" if it throws none.
+  inline std::string invalid_message(const std::function<void()> &f)
+  {
+    try
+      {
+        f();
+      }
+    catch (const InvalidParameter &e)
+      {
+        return e.what();
+      }
+    return "";
   }
 } // namespace pumpd::test

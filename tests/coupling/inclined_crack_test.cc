@@ -69,7 +69,10 @@ namespace
     return std::max(coupling::directed_max_distance(turned, b[1]), coupling::directed_max_distance(b[1], turned));
   }
 
-  coupling::Parameters inclined(const std::string &output) { return test::scene_file("prm/inclined-crack.prm", output); }
+  coupling::Parameters inclined(const std::string &output)
+  {
+    return test::scene_file("prm/inclined-crack.prm", output);
+  }
 } // namespace
 
 TEST(InclinedCrack, LefmGrowthGrowsBothTipsSymmetrically)

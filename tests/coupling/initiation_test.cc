@@ -38,6 +38,7 @@
 #include "error.h"
 #include "initiation.h"
 #include "metric.h"
+#include "expect_invalid.h"
 #include "scene_file.h"
 
 using namespace pumpd;
@@ -63,18 +64,6 @@ namespace
     return field;
   }
 
-  std::string message_of(const std::function<void()> &f)
-  {
-    try
-      {
-        f();
-      }
-    catch (const InvalidParameter &e)
-      {
-        return e.what();
-      }
-    return "";
-  }
 } // namespace
 
 TEST(CandidateSites, BumpsWithinTheMarginAreListedLargestFirst)
@@ -106,12 +95,12 @@ TEST(CandidateSites, NoSiteInADiskLeftOut)
 TEST(CandidateSites, NoTensionStopsWithOneMessage)
 {
   auto field = bumps({{{0.5, 0.5}, -1e6}}, 0.05);
-  EXPECT_NE(message_of([&] { coupling::candidate_sites(field, 1e6, 0.1, 0.05); })
+  EXPECT_NE(test::invalid_message([&] { coupling::candidate_sites(field, 1e6, 0.1, 0.05); })
               .find("Boundary conditions = no tension: the largest principal stress is nowhere positive"),
             std::string::npos);
   for (auto &s : field)
     s.yy = 0.;
-  const auto text = message_of([&] { coupling::candidate_sites(field, 1e6, 0.1, 0.05); });
+  const auto text = test::invalid_message([&] { coupling::candidate_sites(field, 1e6, 0.1, 0.05); });
   std::cout << text << "\n";
   EXPECT_NE(text.find("largest ratio to the strength per unit load factor 0 at (0, 0)"), std::string::npos);
 }
@@ -194,7 +183,7 @@ TEST(Initiation, LefmGrowthListsTheSitesAndStops)
   auto p   = test::scene_file("prm/unnotched-beam.prm", "initiation_beam");
   p.method = "lefm-growth";
   std::ostringstream  out;
-  const auto          text = message_of([&] { coupling::run(p, out); });
+  const auto          text = test::invalid_message([&] { coupling::run(p, out); });
   std::cout << out.str() << text << "\n";
   EXPECT_EQ(text.rfind("Initial cracks = none: LEFM growth has no law for a crack to start", 0), 0u);
   EXPECT_NE(out.str().find("site 1: (0.22, 0), lambda_i = "), std::string::npos);

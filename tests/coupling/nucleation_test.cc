@@ -27,6 +27,7 @@
 #include "error.h"
 #include "metric.h"
 #include "nucleation.h"
+#include "expect_invalid.h"
 #include "scene_file.h"
 
 using namespace pumpd;
@@ -34,18 +35,6 @@ using geometry::Point;
 
 namespace
 {
-  std::string message_of(const std::function<void()> &f)
-  {
-    try
-      {
-        f();
-      }
-    catch (const InvalidParameter &e)
-      {
-        return e.what();
-      }
-    return "";
-  }
 
   /// Coarse settings for CI: m = 4, the exchanges after the nucleation limited to `exchanges`.
   coupling::Parameters coarse(const std::string &file, const std::string &output, unsigned int exchanges)
@@ -115,7 +104,7 @@ TEST(NucleationMouth, NearestBoundaryPointAndTheDirectionIntoTheMaterial)
 TEST(NucleationMouth, AnInteriorSiteIsRefused)
 {
   const geometry::Body body(geometry::Box{0., 0., 1., 0.5});
-  const auto text = message_of([&] { coupling::nucleation_mouth(body, {0.3, 0.2}, 0.01); });
+  const auto text = test::invalid_message([&] { coupling::nucleation_mouth(body, {0.3, 0.2}, 0.01); });
   std::cout << text << "\n";
   EXPECT_EQ(text.rfind("Initial cracks = none: the first initiation site (0.3, 0.2) lies 0.2 m inside the body, more "
                        "than a horizon (0.01 m)",
@@ -191,7 +180,7 @@ TEST(Nucleation, ASceneThatDoesNotBreakSaysSo)
   p.cycle.exchange.max_load_factor  = 0.85;
   const auto         scene          = coupling::build_scene(p.scene);
   std::ostringstream out;
-  const auto         text = message_of(
+  const auto         text = test::invalid_message(
     [&] { coupling::run_global_local_from_initiation(scene, p.global_local_settings(), p.initiation, out); });
   std::cout << out.str() << text << "\n";
   EXPECT_EQ(text.rfind("Maximum load factor = 0.85: no crack formed at the first initiation site (0.22, 0) up to this "

@@ -1,6 +1,7 @@
 // Offset pair of edge cracks under tension (prm/offset-pair.prm, meshes/offset-pair.geo): LEFM
-// growth of two cracks (the global-local cycle's test is at the end). The left crack runs from the left edge at y = 0.04, the right one from the
-// right edge at y = 0.06; the top edge is pulled, the bottom held. Checked:
+// growth of two cracks (the global-local cycle's test is at the end). The left crack runs from the
+// left edge at y = 0.04, the right one from the right edge at y = 0.06; the top edge is pulled, the
+// bottom held. Checked:
 // - both cracks grow (their tips advance towards the middle of the plate);
 // - each path turns towards the other crack: the end of the left path lies above y = 0.04 (the
 //   right crack's side), the end of the right path below y = 0.06;
@@ -133,7 +134,7 @@ TEST(OffsetPair, GlobalLocalTurnsTheTipsTowardsEachOther)
 
   auto gl                    = test::scene_file("prm/offset-pair.prm", "offset_pair_global_local");
   gl.pd.horizon_over_spacing = 4;
-  const auto r               = coupling::run_global_local(coupling::build_scene(gl.scene), gl.global_local_settings(), std::cout);
+  const auto r = coupling::run_global_local(coupling::build_scene(gl.scene), gl.global_local_settings(), std::cout);
   ASSERT_EQ(r.paths.size(), 2u);
   const auto &left = r.paths[0], &right = r.paths[1];
   EXPECT_GT(left.back().x, 0.07 + 0.01);
