@@ -496,7 +496,11 @@ namespace pumpd::coupling
           parts[m].record.horizon = track.pd.horizon;
           parts[m].box        = box.front();
           tips.push_back(parts[m].tip.position);
-          directions.push_back(parts[m].tip.direction);
+          // The box lies ahead along the maximum hoop stress direction, where the crack will
+          // turn: a crack kinking by theta_c then runs through the box's middle, not along a layer.
+          const Point  d = parts[m].tip.direction, n{-d.y, d.x};
+          const double kink = parts[m].record.predicted_kink;
+          directions.push_back(std::cos(kink) * d + std::sin(kink) * n);
         }
       auto &track     = tracks[owner(box, parts)];
       lead.record.box = track.boxes.place(tips, directions, track.length_scale());
