@@ -68,6 +68,18 @@ namespace pumpd::coupling
       const Point c = tip + ((0.5 - s.behind) * s.size) * d;
       return {c.x - 0.5 * s.size, c.y - 0.5 * s.size, c.x + 0.5 * s.size, c.y + 0.5 * s.size};
     }
+
+    /// The square ahead of the tip along d, or along the turn where the crack turned by it would
+    /// come within two horizons (a layer and a process zone) of the square's edges before it
+    /// reaches as far ahead as the front layer.
+    Box square_for_turn(Point tip, Point d, Point turn, const BoxSettings &s)
+    {
+      const Box    ahead = square_ahead(tip, d, s);
+      const double inset = 2. * s.horizon;
+      const Point  reach = tip + ((1. - s.behind) * s.size - inset) * turn;
+      const Box    inner{ahead.x_min + inset, ahead.y_min + inset, ahead.x_max - inset, ahead.y_max - inset};
+      return inner.contains(reach) ? ahead : square_ahead(tip, turn, s);
+    }
   } // namespace
 
   double BoxPolicy::smallest_hole_within_reach(Point tip, Point d) const
@@ -131,9 +143,13 @@ namespace pumpd::coupling
     last_scale = scale;
   }
 
-  Box BoxPolicy::place(Point tip, Point d, double scale) { return place(std::vector{tip}, std::vector{d}, scale); }
+  Box BoxPolicy::place(Point tip, Point d, double scale)
+  {
+    return place(std::vector{tip}, std::vector{d}, std::vector{d}, scale);
+  }
 
-  Box BoxPolicy::place(const std::vector<Point> &tips, const std::vector<Point> &d, double scale)
+  Box BoxPolicy::place(const std::vector<Point> &tips, const std::vector<Point> &d, const std::vector<Point> &turns,
+                       double scale)
   {
     const bool rescaled = scale != last_scale;
     if (rescaled)
@@ -148,10 +164,10 @@ namespace pumpd::coupling
         return boxes.back();
       }
     last_moved = true;
-    Box box = square_ahead(tips.front(), d.front(), s);
+    Box box = square_for_turn(tips.front(), d.front(), turns.front(), s);
     for (std::size_t k = 1; k < tips.size(); ++k)
       {
-        const Box own = square_ahead(tips[k], d[k], s);
+        const Box own = square_for_turn(tips[k], d[k], turns[k], s);
         box           = {std::min(box.x_min, own.x_min), std::min(box.y_min, own.y_min), std::max(box.x_max, own.x_max),
                          std::max(box.y_max, own.y_max)};
       }

@@ -39,9 +39,12 @@ namespace pumpd::coupling
     /// A box of another scale is never kept.
     geometry::Box place(geometry::Point tip, geometry::Point direction, double scale = 1.);
     /// The box shared by several tips: the smallest box holding each tip's own square (as placed
-    /// for it alone), fitted as one; kept while it keeps every tip.
+    /// for it alone), fitted as one; kept while it keeps every tip. `turns` are the unit directions
+    /// the tips are expected to grow in (the maximum hoop stress directions): a new square lies
+    /// ahead along the crack's direction if the turned crack, followed to the square's front
+    /// layer, stays two horizons inside it; else (a large kink) it lies ahead along the turn.
     geometry::Box place(const std::vector<geometry::Point> &tips, const std::vector<geometry::Point> &directions,
-                        double scale = 1.);
+                        const std::vector<geometry::Point> &turns, double scale = 1.);
     /// Half the smaller bounding-box side of the smallest hole the box at this tip (settings as
     /// given, unscaled) would take in or grow for; infinity if none.
     double smallest_hole_within_reach(geometry::Point tip, geometry::Point direction) const;

@@ -12,8 +12,8 @@ namespace pumpd::coupling
                       "smaller side.",
                       dealii::Patterns::Double(1e-300));
     prm.add_parameter("Box tip position", box.behind,
-                      "The tip sits this fraction of the box side from the box's rear (along the maximum hoop stress "
-                      "direction of the tip's K_I, K_II).",
+                      "The tip sits this fraction of the box side from the box's rear (along the crack; along the "
+                      "maximum hoop stress direction for a kink too large for that box).",
                       dealii::Patterns::Double(0.05, 0.95));
     prm.add_parameter("Box margin", box.margin,
                       "The box moves ahead once the tip has less than this much free lattice ahead [m].",

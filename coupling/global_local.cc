@@ -487,7 +487,7 @@ namespace pumpd::coupling
       unsigned int finest = 0;
       for (std::size_t m : box)
         finest = std::max(finest, tracks[parts[m].track].halvings);
-      std::vector<Point> tips, directions;
+      std::vector<Point> tips, directions, turns;
       for (std::size_t m : box)
         {
           auto &track         = tracks[parts[m].track];
@@ -496,14 +496,13 @@ namespace pumpd::coupling
           parts[m].record.horizon = track.pd.horizon;
           parts[m].box        = box.front();
           tips.push_back(parts[m].tip.position);
-          // The box lies ahead along the maximum hoop stress direction, where the crack will
-          // turn: a crack kinking by theta_c then runs through the box's middle, not along a layer.
           const Point  d = parts[m].tip.direction, n{-d.y, d.x};
           const double kink = parts[m].record.predicted_kink;
-          directions.push_back(std::cos(kink) * d + std::sin(kink) * n);
+          directions.push_back(d);
+          turns.push_back(std::cos(kink) * d + std::sin(kink) * n);
         }
       auto &track     = tracks[owner(box, parts)];
-      lead.record.box = track.boxes.place(tips, directions, track.length_scale());
+      lead.record.box = track.boxes.place(tips, directions, turns, track.length_scale());
       lead.model.emplace(material, track.pd.horizon, track.pd.horizon_over_spacing,
                          local::Region{scene.body, lead.record.box, polylines()});
       for (std::size_t m : box)

@@ -47,6 +47,28 @@ TEST(BoxPolicy, PlacesTheBoxAheadOfTheTip)
     EXPECT_TRUE(on_lattice(e, 0.0005)) << e;
 }
 
+// Box 32 mm, tip 0.3 of it from the rear, delta 4 mm: a crack turned by theta reaches the front
+// layer's depth (0.7 * 32 - 8 = 14.4 mm on) 14.4 sin(theta) off the axis, within two horizons of
+// a side (16 - 8 = 8 mm) for theta above 33.7 degrees: then the box lies ahead along the turn.
+TEST(BoxPolicy, PlacesTheBoxAlongALargeTurn)
+{
+  const double pi = std::acos(-1.);
+  const Point  tip{0.1016, 0.04}, up{0., 1.};
+  const auto   turned = [&](double degrees) {
+    return Point{std::sin(degrees * pi / 180.), std::cos(degrees * pi / 180.)};
+  };
+  coupling::BoxPolicy straight(beam, settings()), small(beam, settings()), large(beam, settings());
+  const Box           ahead = straight.place(tip, up);
+  const Box           kept  = small.place(std::vector{tip}, std::vector{up}, std::vector{turned(30.)});
+  EXPECT_EQ(kept.x_min, ahead.x_min);
+  EXPECT_EQ(kept.y_min, ahead.y_min);
+  const Box along = large.place(std::vector{tip}, std::vector{up}, std::vector{turned(40.)});
+  const Point centre{0.5 * (along.x_min + along.x_max), 0.5 * (along.y_min + along.y_max)};
+  const Point expected = tip + (0.2 * 0.032) * turned(40.);
+  EXPECT_NEAR(centre.x, expected.x, 0.0005 + 1e-12);
+  EXPECT_NEAR(centre.y, expected.y, 0.0005 + 1e-12);
+}
+
 TEST(BoxPolicy, StaysWhileTheTipHasRoomAndMovesAheadOtherwise)
 {
   coupling::BoxPolicy policy(beam, settings());
