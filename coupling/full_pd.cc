@@ -16,6 +16,7 @@
 #include "arrival.h"
 #include "boundary_layer.h"
 #include "crack_extraction.h"
+#include "crack_traces.h"
 #include "error.h"
 #include "exchange.h"
 #include "integrators.h"
@@ -246,18 +247,14 @@ namespace pumpd::coupling
       throw InvalidParameter("Maximum advance", text(p.max_advance),
                              "must be 0 or at least the target advance (" + text(a_t) + " m)");
 
-    // The crack, its mouth first: it is traced from its tip. Without one, it is traced from the
-    // seed (seed_crack) of the damage; the mouth is not known before the crack forms, so the
-    // steps are taken in the control displacement.
-    geometry::Polyline initial;
-    if (!scene.cracks.empty())
-      {
-        initial = scene.crack();
-        if (scene.body.clearance(initial.back()) < scene.body.clearance(initial.front()))
-          std::reverse(initial.begin(), initial.end());
-      }
-    const bool has_mouth =
-      !initial.empty() && scene.body.clearance(initial.front()) <= 1e-8 * scene.body.bounding_box().width();
+    // The cracks, each its mouth first: they are traced from their tips (the first crack's mouth
+    // holds the gauges). Without one, the crack is traced from the seed (seed_crack) of the damage;
+    // the mouth is not known before the crack forms, so the steps are taken in the control
+    // displacement.
+    const double on_boundary = 1e-8 * scene.body.bounding_box().width();
+    CrackTraces  traces(scene.cracks, scene.body, on_boundary);
+    const geometry::Polyline initial   = scene.cracks.empty() ? geometry::Polyline{} : traces.paths().front();
+    const bool               has_mouth = !initial.empty() && scene.body.clearance(initial.front()) <= on_boundary;
     const bool by_mouth = p.control == "crack mouth opening" && !initial.empty();
     if (by_mouth && !has_mouth)
       throw InvalidParameter("Control", p.control,
@@ -346,15 +343,10 @@ namespace pumpd::coupling
         return r.contains(model.lattice().position(i), std::max(0., r.elastic_margin) + pd.horizon);
       });
     std::optional<Seed> seed;
-    if (!initial.empty())
-      {
-        const Point tip = initial.back(), behind = initial[initial.size() - 2];
-        seed            = Seed{tip, tip, (1. / geometry::norm(tip - behind)) * (tip - behind)};
-      }
-    ExtractionSettings extraction;
+    ExtractionSettings  extraction;
     extraction.threshold = pd.crack_damage;
     extraction.horizon   = pd.horizon;
-    const double length0 = geometry::length(initial);
+    const double length0 = traces.length();
 
     // Crack-mouth opening w: the relative displacement of two gauge nodes either side of the
     // mouth, along the normal to the crack's first segment (none without an initial crack).
@@ -372,25 +364,33 @@ namespace pumpd::coupling
       return (st.ux[gauge_plus] - st.ux[gauge_minus]) * normal.x + (st.uy[gauge_plus] - st.uy[gauge_minus]) * normal.y;
     };
 
-    // Nodes near the initial tip (without one: every node a crack may seed at): their stretch
+    // Nodes near the initial tips (without a crack: every node a crack may seed at): their stretch
     // ratio decides the elastic jump (the pads' own stress concentrations do not).
+    const auto               tips0 = traces.initial_tips();
     std::vector<std::size_t> near_tip;
     for (std::size_t i : model.nodes())
-      if (seed ? geometry::norm(model.lattice().position(i) - seed->mouth) < 2. * pd.horizon : bool(seedable[i]))
+      if (initial.empty() ? bool(seedable[i]) : std::any_of(tips0.begin(), tips0.end(), [&](Point tip) {
+            return geometry::norm(model.lattice().position(i) - tip) < 2. * pd.horizon;
+          }))
         near_tip.push_back(i);
 
     Recorder recorder(scene);
     CsvFile  table = recorder.table("load_steps.csv", "step,control_displacement_m,crack_mouth_opening_m,lambda,load,"
                                                      "displacement,crack_length_m,tip_x_m,tip_y_m,dr_iterations,"
                                                      "dr_converged,repeats,seconds");
-    recorder.crack_path(initial);
+    // Every crack as accepted (without an initial one, the crack the seed forms).
+    const auto paths = [&](const geometry::Polyline &seeded) {
+      return initial.empty() ? std::vector<geometry::Polyline>{seeded} : traces.paths();
+    };
+    recorder.crack_paths(paths(initial));
     std::size_t prescribed_nodes = 0;
     for (const auto &r : prescribed)
       prescribed_nodes += r.size();
-    out << "full PD: " << scene.mesh_file << ", " << scene.body.holes().size() << " holes, initial crack " << length0
-        << " m; delta " << pd.horizon << " m, m = " << pd.horizon_over_spacing << ", h = " << h << " m: "
-        << model.nodes().size() << " nodes; " << prescribed.size() << " prescribed regions (" << prescribed_nodes
-        << " nodes), " << (drive.pad ? "a loading pad" : "lambda-scaled displacements") << ", no-fail radius "
+    out << "full PD: " << scene.mesh_file << ", " << scene.body.holes().size() << " holes, initial cracks "
+        << scene.cracks.size() << " (tips " << tips0.size() << ", " << length0 << " m); delta " << pd.horizon
+        << " m, m = " << pd.horizon_over_spacing << ", h = " << h << " m: " << model.nodes().size() << " nodes; "
+        << prescribed.size() << " prescribed regions (" << prescribed_nodes << " nodes), "
+        << (drive.pad ? "a loading pad" : "lambda-scaled displacements") << ", no-fail radius "
         << p.no_fail_horizons * pd.horizon << " m (" << model.linear_bond_count()
         << " linear bonds); K_c = " << model.material().critical_sif() << " Pa m^1/2" << std::endl;
     if (initial.empty())
@@ -435,10 +435,11 @@ namespace pumpd::coupling
         FullPdStep   step;
         step.step = n;
         const local::State saved = s;
-        CrackIncrement     increment;
-        DamageField        field;
-        std::string        branching;
-        double             d_new = d + dd, pad_new = pad, growth = 0., last_growth = 0.;
+        CrackIncrement              increment;  // of the seeded crack
+        std::vector<CrackIncrement> increments; // of every tip of the initial cracks
+        DamageField                 field;
+        std::string                 branching;
+        double             d_new = d + dd, pad_new = pad, growth = 0., last_growth = 0., traced_length = 0.;
         for (;;)
           {
             d_new = d + dd;
@@ -507,20 +508,29 @@ namespace pumpd::coupling
                 // horizon long.
                 if (initial.empty() && length < pd.horizon)
                   seed = seed_crack(model, field, seedable, pd.crack_damage, pd.horizon);
-                if (seed)
+                if (!initial.empty())
                   {
-                    increment         = extract_crack(field, seed->start, seed->direction, extraction);
-                    increment.path[0] = seed->mouth;
+                    increments    = traces.extract(field, extraction, 0.5 * pd.horizon);
+                    traced_length = traces.traced_length(increments);
                   }
                 else
-                  increment = CrackIncrement{};
+                  {
+                    if (seed)
+                      {
+                        increment         = extract_crack(field, seed->start, seed->direction, extraction);
+                        increment.path[0] = seed->mouth;
+                      }
+                    else
+                      increment = CrackIncrement{};
+                    traced_length = length0 + increment.length();
+                  }
               }
             catch (const CrackBranching &e)
               {
                 branching = e.what();
                 break;
               }
-            growth = std::max(0., length0 + increment.length() - length);
+            growth = std::max(0., traced_length - length);
             // Repeat a too-long advance with half the increment, unless halving did not shorten it
             // (unstable growth, a snap-back: the crack runs at any increment; accepted as it is).
             const bool shorter = step.repeats == 0 || growth < 0.75 * last_growth;
@@ -554,21 +564,22 @@ namespace pumpd::coupling
         std::string stop;
         if (!branching.empty())
           stop = "crack branching, refused: " + branching;
+        else if (!initial.empty())
+          {
+            stop        = traces.accept(increments, scene.body, settings.growth.hole_margin, pd.horizon);
+            result.path = traces.paths().front();
+          }
         else
           {
-            geometry::Polyline path = initial.empty() && !increment.path.empty() ? geometry::Polyline{increment.path[0]}
-                                                                                  : initial;
-            for (std::size_t k = 1; k < increment.path.size(); ++k)
-              path.push_back(increment.path[k]);
+            const geometry::Polyline &path = increment.path;
             // A seeded crack's first segment leaves the boundary: from a hole's rim it is not an
             // arrival at that hole.
-            const bool from_rim = initial.empty() && !path.empty() && scene.body.hole_clearance(path[0]) < 1e-3 * h;
-            auto arrival = arrive(path, scene.body, settings.growth.hole_margin, pd.horizon,
-                                  initial.empty() ? (from_rim ? 2 : 1) : initial.size());
+            const bool from_rim = !path.empty() && scene.body.hole_clearance(path[0]) < 1e-3 * h;
+            auto arrival = arrive(path, scene.body, settings.growth.hole_margin, pd.horizon, from_rim ? 2 : 1);
             result.path  = arrival.path;
             stop         = arrival.reason;
           }
-        const double new_length = geometry::length(result.path);
+        const double new_length = initial.empty() ? geometry::length(result.path) : traces.length();
         growth                  = std::max(0., new_length - length);
         length                  = new_length;
 
@@ -621,10 +632,14 @@ namespace pumpd::coupling
         table.row(n, pad, step.mouth_opening, step.lambda, step.load, step.reported_displacement, length, step.tip.x,
                   step.tip.y, step.iterations, step.converged, step.repeats, step.seconds);
         recorder.load_displacement(n, step.lambda, step.load, step.reported_displacement, length, step.tip);
-        recorder.crack_path(result.path);
+        recorder.crack_paths(paths(result.path));
         const bool last = !stop.empty() || n >= p.max_steps || pad >= d_max * (1. - 1e-12);
         if (n % p.output_interval == 0 || last)
           recorder.pd_state(model, s);
+
+        std::string tracing = increment.stop_reason;
+        for (const auto &inc : increments)
+          tracing += (tracing.empty() ? "" : "; ") + inc.stop_reason;
 
         // ETA: growth rate against the tip's clearance once the crack grows, else the
         // displacement still to go.
@@ -643,7 +658,7 @@ namespace pumpd::coupling
             << (step.repeats ? "  repeats " + std::to_string(step.repeats) : "")
             << (elastic ? "  elastic, Z_tip " + text(z_tip) : "") << "  " << std::fixed << std::setprecision(1)
             << step.seconds << " s  ETA ~" << std::setprecision(0) << eta << " s" << std::defaultfloat
-            << std::setprecision(6) << (growth > 0. ? "  (tracing: " + increment.stop_reason + ")" : "") << std::endl;
+            << std::setprecision(6) << (growth > 0. ? "  (tracing: " + tracing + ")" : "") << std::endl;
         if (!stop.empty())
           {
             result.stop_reason = stop;
@@ -651,6 +666,8 @@ namespace pumpd::coupling
           }
       }
 
+    result.paths       = paths(result.path);
+    result.joined      = traces.joined();
     result.seconds     = seconds_since(t0);
     result.peak_rss_mb = peak_rss_mb();
     std::size_t iterations = 0;

@@ -15,17 +15,19 @@
 // largest value of the lambda-scaled displacement conditions. Tractions, or a point force together
 // with lambda-scaled displacements, cannot be driven by one displacement and are refused.
 //
-// Quasi-static states by dynamic relaxation at each d; after each state the crack is traced from
-// the initial tip (coupling::extract_crack) through the damage field, per node the largest damage
-// of the accepted states (the softening is elastic up to the break stretch, so bonds behind the
-// tip relax when the load falls after the peak; the crack they marked stays). A scene without a
-// crack forms its own: it is traced from a mouth, the boundary point nearest the most damaged node
-// within a spacing of the boundary (damage at least the crack threshold, a horizon clear of the
-// prescribed regions and no-fail zones), along the direction to the damage-weighted centroid of
-// the crack nodes within three horizons of it; mouth and direction follow the damage until the
-// crack is a horizon long. Its steps are taken in d (the mouth is not known before it forms). The run stops where
-// the crack reaches a hole (within the hole margin) or the outline, stops growing for good, or d
-// reaches its maximum.
+// Quasi-static states by dynamic relaxation at each d; after each state every crack is traced from
+// its initial tips (coupling/crack_traces.h: an edge crack from its tip, an interior crack from
+// both) through the damage field, per node the largest damage of the accepted states (the
+// softening is elastic up to the break stretch, so bonds behind the tip relax when the load falls
+// after the peak; the crack they marked stays). A scene without a crack forms its own: it is
+// traced from a mouth, the boundary point nearest the most damaged node within a spacing of the
+// boundary (damage at least the crack threshold, a horizon clear of the prescribed regions and
+// no-fail zones), along the direction to the damage-weighted centroid of the crack nodes within
+// three horizons of it; mouth and direction follow the damage until the crack is a horizon long.
+// Its steps are taken in d (the mouth is not known before it forms). The run stops where every tip
+// has reached a hole (within the hole margin) or the outline, where a tip joins another crack, where
+// the cracks stop growing for good, or where d reaches its maximum. The crack advance of a step is
+// that of every crack together.
 //
 // Displacement steps (the rule the method follows):
 //  1. elastic: while no bond has passed its inflection stretch (max stretch ratio Z < 1) the
@@ -44,9 +46,9 @@
 // equilibrium path turns back in d, and dynamic relaxation jumps to a far state. With `control =
 // crack mouth opening` the steps above are taken in the crack-mouth opening w instead (phase 1
 // stays under d; w is proportional to it there), which grows monotonically along the whole path.
-// The opening is read between two gauge nodes one `gauge distance` either side of the crack's
-// mouth (normal to its first segment). A servo inside the relaxation (local::Servo) moves the
-// driven displacements whenever |w - w*| exceeds a tenth of the step: by gain (d/w)_0 (w* - w),
+// The opening is read between two gauge nodes one `gauge distance` either side of the first
+// crack's mouth (normal to its first segment). A servo inside the relaxation (local::Servo) moves
+// the driven displacements whenever |w - w*| exceeds a tenth of the step: by gain (d/w)_0 (w* - w),
 // and the whole body with them along the secant mode u_0 / d_0 ((d, u)_0 the last accepted
 // state); the relaxation settles the rest.
 #pragma once
@@ -104,8 +106,8 @@ namespace pumpd::coupling
     double          mouth_opening = 0.; ///< crack-mouth opening between the gauges [m]
     double          lambda        = 0.; ///< the scene's load factor the state corresponds to
     double          load = 0., reported_displacement = 0.; ///< the scene's report
-    double          crack_length = 0.; ///< [m], the initial crack included
-    geometry::Point tip;
+    double          crack_length = 0.; ///< [m], every crack together, the initial cracks included
+    geometry::Point tip;               ///< the first crack's end
     std::size_t     iterations = 0, repeats = 0;
     bool            converged  = true;
     double          seconds    = 0.;
@@ -113,13 +115,15 @@ namespace pumpd::coupling
 
   struct FullPdResult
   {
-    geometry::Polyline      path;
-    std::vector<FullPdStep> steps;
-    std::string             stop_reason;
-    std::size_t             nodes      = 0;
-    double                  node_steps = 0.; ///< sum over DR states of nodes x iterations
-    double                  seconds    = 0., seconds_relaxation = 0.;
-    double                  peak_rss_mb = 0.;
+    geometry::Polyline              path;           ///< the first crack
+    std::vector<geometry::Polyline> paths;          ///< every crack, in the scene's order
+    bool                            joined = false; ///< a tip joined another crack
+    std::vector<FullPdStep>         steps;
+    std::string                     stop_reason;
+    std::size_t                     nodes      = 0;
+    double                          node_steps = 0.; ///< sum over DR states of nodes x iterations
+    double                          seconds    = 0., seconds_relaxation = 0.;
+    double                          peak_rss_mb = 0.;
     /// Against the scene's reference path (our path up to its point nearest the reference's tip):
     /// symmetric mean and Hausdorff distance [m]; -1 without one.
     double reference_mean = -1., reference_hausdorff = -1.;

@@ -41,7 +41,7 @@ namespace pumpd::coupling
   {
     if (cracks.size() != 1)
       throw InvalidParameter("Initial cracks", std::to_string(cracks.size()) + " cracks",
-                             "this method grows exactly one crack (LEFM growth and global-local grow several)");
+                             "this method grows exactly one crack (LEFM growth, global-local and full PD grow several)");
     return cracks.front();
   }
 
@@ -64,8 +64,8 @@ namespace pumpd::coupling
                       "Crack polylines \"x1,y1; x2,y2; ...\" [m], several separated by |. An end on the outline or on "
                       "a hole's rim is a mouth, every other end a tip; vertices inside the body, segments crossing "
                       "neither the outline nor a hole; two cracks neither touch nor cross and keep at least a tenth of "
-                      "the mesh cell apart where they come closest. LEFM growth and global-local grow several cracks, full "
-                      "PD one. Empty: no crack; global-local and full PD start one where the material first fails "
+                      "the mesh cell apart where they come closest. LEFM growth, global-local and full PD grow several "
+                      "cracks. Empty: no crack; global-local and full PD start one where the material first fails "
                       "(section Initiation), LEFM growth lists where one would start and stops.",
                       Patterns::Anything());
     prm.add_parameter("Output directory", output_directory,
