@@ -12,8 +12,8 @@
 // Every exchange starts again at first_load_factor, below P_c: the box is rebuilt undamaged but
 // for the crack's broken bonds, and its process zone must form before the crack grows. Started
 // above the growth load (one increment below the last accepted lambda, start_below_accepted),
-// the crack runs within one relaxation and its direction is biased: on Case II 2.2 mm from the
-// full-PD path against 0.5 mm (README), for about half the PD work.
+// the crack runs within one relaxation and its direction is biased (docs/ingraffea.md gives the
+// cost and the path change on Case II): an option, off by default.
 // The allowed advance is max_advance, halved while the tip is within near_distance of a hole or
 // the body's outline: near them the crack exchanges more often (what the reference had to do by
 // hand for Case III).
