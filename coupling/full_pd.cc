@@ -86,7 +86,18 @@ namespace pumpd::coupling
                       Patterns::Integer(1));
     prm.add_parameter("Output interval", output_interval, "Write pd_NNN.vtu every n steps (and the last).",
                       Patterns::Integer(1));
+    prm.add_parameter("Equilibrium error", equilibrium_error,
+                      "Dynamic relaxation of the whole body stops when its residual |f| / (k |u - u_rigid|) is below "
+                      "this times (h / L)^2 (L the larger side of the body, h the spacing; the body's slowest mode is "
+                      "about (h / L)^2 as stiff as a bond, so this bounds the displacement error relative to the "
+                      "deformation), or below the Peridynamics section's Relaxation tolerance where that is smaller.",
+                      Patterns::Double(1e-12, 1.));
     prm.leave_subsection();
+  }
+
+  double FullPdControlSettings::relaxation_tolerance(double tolerance, double spacing, double size) const
+  {
+    return std::min(tolerance, equilibrium_error * (spacing / size) * (spacing / size));
   }
 
   namespace
@@ -333,7 +344,10 @@ namespace pumpd::coupling
         }
       return std::pair<double, double>{load, displacement};
     };
-    const local::DynamicRelaxation relax(model, pd.tolerance, pd.max_iterations);
+    const auto                    &extent = scene.body.bounding_box();
+    const double                   tolerance =
+      p.relaxation_tolerance(pd.tolerance, h, std::max(extent.width(), extent.height()));
+    const local::DynamicRelaxation relax(model, tolerance, pd.max_iterations);
     const double                   n_nodes = double(model.nodes().size());
 
     // Nodes a crack may seed at: a horizon clear of every prescribed region and no-fail zone.
@@ -392,7 +406,8 @@ namespace pumpd::coupling
         << prescribed.size() << " prescribed regions (" << prescribed_nodes << " nodes), "
         << (drive.pad ? "a loading pad" : "lambda-scaled displacements") << ", no-fail radius "
         << p.no_fail_horizons * pd.horizon << " m (" << model.linear_bond_count()
-        << " linear bonds); K_c = " << model.material().critical_sif() << " Pa m^1/2" << std::endl;
+        << " linear bonds); relaxation tolerance " << tolerance << "; K_c = " << model.material().critical_sif()
+        << " Pa m^1/2" << std::endl;
     if (initial.empty())
       out << "full PD: no initial crack: it is traced from where the damage first reaches the boundary, under "
              "load-point control"

@@ -42,6 +42,15 @@
 // The predictor of each state: the elastic state scaled to the new d (phase 1), later the last
 // state plus the last step's increment extrapolated to dd.
 //
+// Equilibrium. Dynamic relaxation stops when the residual r = |f| / (k |u - u_rigid|) (k the bond
+// stiffness scale, local/integrators.h) falls below a tolerance. The slowest mode of a body L wide
+// on a lattice of spacing h, its bending, is about (h / L)^2 as stiff as a bond, so a state with
+// residual r can lie r (L / h)^2 from equilibrium, relative to its deformation. The tolerance that
+// suits a PD box 30 to 60 spacings wide leaves a whole panel hundreds of spacings wide far from it:
+// the panel stiffer than it is, its stress concentrations too high. The whole body is therefore
+// relaxed to r < `equilibrium error` (h / L)^2, L the larger side of its bounding box (or to the
+// Peridynamics section's tolerance where that is tighter).
+//
 // Control. Under displacement control a specimen snaps back once the crack grows: the
 // equilibrium path turns back in d, and dynamic relaxation jumps to a far state. With `control =
 // crack mouth opening` the steps above are taken in the crack-mouth opening w instead (phase 1
@@ -88,6 +97,12 @@ namespace pumpd::coupling
     double       gauge_distance      = 0.;    ///< [m]; 0: one horizon
     unsigned int stall_steps         = 15;    ///< no growth for this many steps after it began: stop
     unsigned int output_interval     = 10;    ///< pd_*.vtu every n steps (and the last)
+    double       equilibrium_error   = 5e-3;  ///< relative displacement error the relaxation leaves at most
+
+    /// The residual tolerance of dynamic relaxation on a body of larger side `size` and lattice
+    /// spacing h (header comment, "Equilibrium"): the smaller of `tolerance` (the Peridynamics
+    /// section's) and equilibrium_error (h / size)^2.
+    double relaxation_tolerance(double tolerance, double spacing, double size) const;
 
     void add_parameters(dealii::ParameterHandler &prm);
   };

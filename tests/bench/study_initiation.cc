@@ -5,10 +5,15 @@
 // at the scene's delta = 4 mm, m = 8 has about 750k nodes); the cycle's box, margin and advances
 // at twice the scene's, as the horizon is, and the horizon fixed (resolution rule `fixed`: no
 // halving near the corner and the left edge), so that both methods see the same PD material.
+// The arbiter: LEFM growth (coupling/lefm_growth.h: XFEM and the maximum hoop stress, the scene's
+// section LEFM growth) from the first 6 mm of the nucleated crack, the path a linear elastic
+// brittle panel takes from the corner.
 // Outputs under <build>/tests/bench/study_initiation_output/.
 // Metrics: initiation.lpanel.vs_fullpd_mean_mm (symmetric mean distance of the two paths over the
-// shorter one's extent, coupling/path_metrics.h), initiation.lpanel.coupled_over_fullpd_time, the
-// mouths' distance from the corner and each method's crack length.
+// shorter one's extent, coupling/path_metrics.h), initiation.lpanel.gl_vs_lefm_mean_mm and
+// initiation.lpanel.fullpd_vs_lefm_mean_mm (each against LEFM's),
+// initiation.lpanel.coupled_over_fullpd_time, the mouths' distance from the corner and each
+// method's crack length.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -17,6 +22,7 @@
 #include <string>
 
 #include "full_pd.h"
+#include "lefm_growth.h"
 #include "metric.h"
 #include "nucleation.h"
 #include "parameters.h"
@@ -65,10 +71,18 @@ TEST(StudyInitiation, LPanelGlobalLocalAgainstFullPd)
 
   ASSERT_GE(gl.path.size(), 2u);
   ASSERT_GE(pd.path.size(), 2u);
+  const auto lefm_prm = panel("lefm");
+  auto       lefm_scene = coupling::build_scene(lefm_prm.scene);
+  lefm_scene.cracks     = {coupling::truncate(gl.path, 0.006)};
+  const auto lefm       = coupling::run_lefm_growth(lefm_scene, lefm_prm.lefm_growth_settings(), std::cout);
+
   const auto d = coupling::trade_distance(gl.path, pd.path);
   std::cout << "global-local: " << geometry::to_text(gl.path) << " (" << gl.stop_reason << ")\nfull PD: "
-            << geometry::to_text(pd.path) << " (" << pd.stop_reason << ")\n";
+            << geometry::to_text(pd.path) << " (" << pd.stop_reason << ")\nLEFM: " << geometry::to_text(lefm.path)
+            << " (" << lefm.stop_reason << ")\n";
   test::metric("initiation.lpanel.vs_fullpd_mean_mm", 1e3 * d.mean);
+  test::metric("initiation.lpanel.gl_vs_lefm_mean_mm", 1e3 * coupling::trade_distance(gl.path, lefm.path).mean);
+  test::metric("initiation.lpanel.fullpd_vs_lefm_mean_mm", 1e3 * coupling::trade_distance(pd.path, lefm.path).mean);
   test::metric("initiation.lpanel.vs_fullpd_hausdorff_mm", 1e3 * d.hausdorff);
   test::metric("initiation.lpanel.coupled_over_fullpd_time", gl_seconds / pd_seconds);
   test::metric("initiation.lpanel.gl_mouth_from_corner_mm", 1e3 * geometry::norm(gl.path.front() - corner));

@@ -1,7 +1,8 @@
 // The full-domain PD beam (scene full-pd, coupling/full_pd.h), coarse enough for CI: the crack
 // starts at the notch and grows upwards (more than 1 cm, its end in the upper half-plane of the
 // initial tip); the outputs are written; crack-mouth-opening control traces the snap-back that
-// load-point control jumps; bad input is refused naming the parameter.
+// load-point control jumps; bad input is refused naming the parameter. The L-panel without a
+// crack cracks at its corner, and its elastic state is in equilibrium (the XFEM's stiffness).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -14,6 +15,7 @@
 #include "error.h"
 #include "expect_invalid.h"
 #include "full_pd.h"
+#include "global_problem.h"
 #include "metric.h"
 #include "scene_file.h"
 
@@ -190,4 +192,32 @@ TEST(FullPd, WithoutACrackTheLPanelCracksAtItsCorner)
   EXPECT_LE(mouth_err, 1.);
   EXPECT_LT(r.path.back().x, corner.x - 2. * p.pd.horizon);
   EXPECT_GE(r.path.back().y, corner.y - p.pd.horizon);
+}
+
+// The L-panel's first, elastic state against the global problem: full PD of the whole panel at
+// delta = 8 mm, m = 2 (h = 4 mm, 125 spacings across, ~11 700 nodes) under the scene's load-point
+// displacement, relaxed to equilibrium (full_pd.h, "Equilibrium"). Its stiffness at the load point,
+// fy / uy, is the uncracked XFEM's within 15 % (a pad of one horizon against a mesh vertex). A state
+// relaxed to the scene's box tolerance alone (1e-5) has its bending mode far from equilibrium: the
+// panel is then about three times as stiff, its corner stress too high, and the crack leaves the
+// corner too early and too steeply.
+TEST(FullPd, TheLPanelsElasticStateIsInEquilibrium)
+{
+  auto p                    = test::scene_file("prm/l-panel-initiation.prm", "");
+  p.pd.horizon              = 0.008;
+  p.pd.horizon_over_spacing = 2;
+  p.full_pd.max_steps       = 1;
+  const auto         scene = build_scene(p.scene);
+  std::ostringstream log;
+  const auto         r = run_full_pd(scene, p.full_pd_settings(), log);
+  std::cout << log.str();
+  ASSERT_EQ(r.steps.size(), 1u);
+  const double pd_stiffness = r.steps.front().load / r.steps.front().reported_displacement;
+
+  GlobalProblem global(scene, p.global);
+  global.solve_uncracked();
+  const auto [load, displacement] = global.report();
+  const double ratio              = pd_stiffness / (load / displacement);
+  test::metric("fullpd.lpanel.elastic_stiffness_over_xfem", ratio);
+  EXPECT_NEAR(ratio, 1., 0.15);
 }
