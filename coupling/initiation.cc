@@ -20,7 +20,8 @@ namespace pumpd::coupling
     prm.add_parameter("Margin", margin,
                       "A scene without an initial crack lists where one would start: the largest ratio of the largest "
                       "principal stress to the PD strength, and every local maximum of the ratio (none larger within "
-                      "a horizon) within this fraction of it (0.1: within 10 %).",
+                      "a horizon) within this fraction of it (0.1: within 10 %); global-local forms a crack in a PD "
+                      "box at each of them.",
                       dealii::Patterns::Double(0., 1.));
     prm.add_parameter("Point clearance", point_clearance,
                       "No site lies within this many horizons (or cells of the point, where those are larger) of a "
@@ -29,7 +30,7 @@ namespace pumpd::coupling
                       dealii::Patterns::Double(0., 100.));
     prm.add_parameter("First load factor", first_load_factor,
                       "Global-local on a scene without a crack: lambda / lambda_i of the first PD state of the "
-                      "nucleation box at the first site (lambda_i: sigma_1 = sigma_s there); the states rise by the "
+                      "nucleation box at a site (lambda_i: sigma_1 = sigma_s there); the states rise by the "
                       "section Global-local's Load increment up to its Maximum load factor, both in units of lambda_i.",
                       dealii::Patterns::Double(0.05, 1.));
     prm.leave_subsection();
@@ -200,15 +201,29 @@ namespace pumpd::coupling
       }
     if (initiation.sites.size() > shown)
       out << "  and " << initiation.sites.size() - shown << " more in initiation_sites.csv\n";
+    write_initiation_sites(initiation, scene);
+  }
+
+  void write_initiation_sites(const Initiation &initiation, const Scene &scene, const std::vector<SiteOutcome> &outcomes)
+  {
     if (scene.output_directory.empty())
       return;
     std::filesystem::create_directories(scene.output_directory);
-    CsvFile csv(scene.output_directory + "/initiation_sites.csv",
-                "site,x_m,y_m,load_factor,sigma1_per_unit_load_pa,ratio_per_unit_load,direction_x,direction_y");
+    const bool with_outcomes = outcomes.size() == initiation.sites.size() && !outcomes.empty();
+    CsvFile    csv(scene.output_directory + "/initiation_sites.csv",
+                   std::string("site,x_m,y_m,load_factor,sigma1_per_unit_load_pa,ratio_per_unit_load,direction_x,direction_y") +
+                     (with_outcomes ? ",checked,formed,formed_load_factor,crack" : ""));
     for (std::size_t k = 0; k < initiation.sites.size(); ++k)
       {
         const auto &s = initiation.sites[k];
-        csv.row(k + 1, s.position.x, s.position.y, s.load_factor, s.stress, s.ratio, s.direction.x, s.direction.y);
+        if (!with_outcomes)
+          csv.row(k + 1, s.position.x, s.position.y, s.load_factor, s.stress, s.ratio, s.direction.x, s.direction.y);
+        else
+          {
+            const auto &o = outcomes[k];
+            csv.row(k + 1, s.position.x, s.position.y, s.load_factor, s.stress, s.ratio, s.direction.x, s.direction.y,
+                    int(o.checked), int(o.formed), o.load_factor, o.crack);
+          }
       }
   }
 } // namespace pumpd::coupling

@@ -18,6 +18,7 @@
 // unbroken for the same reason).
 #pragma once
 
+#include <cstddef>
 #include <iosfwd>
 #include <string>
 #include <vector>
@@ -35,11 +36,11 @@ namespace dealii
 
 namespace pumpd::coupling
 {
-  /// The section `Initiation`: which sites besides the first one to list, and where the PD states
-  /// of a nucleation (nucleation.h) start.
+  /// The section `Initiation`: which sites to list (and check, nucleation.h), and where the PD
+  /// states of a nucleation start.
   struct InitiationSettings
   {
-    double margin            = 0.1; ///< list the local maxima within this fraction of the largest ratio
+    double margin            = 0.1; ///< the local maxima within this fraction of the largest ratio are sites
     double point_clearance   = 2.;  ///< no site this many horizons (or cells) around a point condition
     double first_load_factor = 0.8; ///< lambda / lambda_i of the first PD state of a nucleation
 
@@ -74,6 +75,21 @@ namespace pumpd::coupling
   Initiation find_initiation(const Scene &scene, const GlobalSettings &global, const PeridynamicsSettings &pd,
                              const InitiationSettings &settings);
 
+  /// What nucleation (nucleation.h) made of a site.
+  struct SiteOutcome
+  {
+    bool        checked     = false; ///< a PD box ran at it (else it is the same site as one before it)
+    bool        formed      = false; ///< a crack formed there
+    double      load_factor = 0.;    ///< lambda of the state that formed it
+    std::size_t crack       = 0;     ///< the initial crack it became (1, 2, ...); 0: none
+  };
+
   /// Prints the sites and writes <output directory>/initiation_sites.csv.
   void report_initiation(const Initiation &initiation, const Scene &scene, std::ostream &out);
+
+  /// Writes <output directory>/initiation_sites.csv: per site its position, lambda_i, sigma_1 and
+  /// the ratio per unit load factor, the direction of sigma_1; with `outcomes` (one per site) also
+  /// checked, formed, formed_load_factor and crack (0/1, lambda, the initial crack or 0).
+  void write_initiation_sites(const Initiation &initiation, const Scene &scene,
+                              const std::vector<SiteOutcome> &outcomes = {});
 } // namespace pumpd::coupling

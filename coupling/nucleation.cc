@@ -7,6 +7,8 @@
 #include <limits>
 #include <optional>
 #include <ostream>
+#include <string>
+#include <vector>
 
 #include "boundary_transfer.h"
 #include "box_policy.h"
@@ -86,16 +88,37 @@ namespace pumpd::coupling
       return zones;
     }
 
-    void write_nucleation(const Scene &scene, const NucleatedCrack &crack, const local::PdModel &model,
-                          const local::State &state)
+    /// The side of a nucleation box (header comment, 3): room for the longest crack between the
+    /// mouth and the no-fail band of every layer.
+    double box_side(const GlobalLocalSettings &settings)
+    {
+      return std::max(settings.cycle.box.size,
+                      2. * ((1. + layer_clearance) * settings.pd.horizon + settings.cycle.exchange.max_advance));
+    }
+
+    std::string site_name(std::size_t number)
+    {
+      return number == 1 ? "the first initiation site" : "initiation site " + std::to_string(number);
+    }
+
+    /// The PD state file of the site `number`: nucleation_pd.vtu for the first, then _2, _3, ...
+    std::string pd_file(const Scene &scene, std::size_t number)
+    {
+      return scene.output_directory + "/nucleation_pd" + (number == 1 ? "" : "_" + std::to_string(number)) + ".vtu";
+    }
+
+    /// nucleation.csv: the vertices of every initial crack, with the load that formed it.
+    void write_cracks(const Scene &scene, const std::vector<NucleatedCrack> &cracks,
+                      const std::vector<std::size_t> &numbers)
     {
       if (scene.output_directory.empty())
         return;
       std::filesystem::create_directories(scene.output_directory);
-      CsvFile csv(scene.output_directory + "/nucleation.csv", "vertex,x_m,y_m,lambda,lambda_over_lambda_i");
-      for (std::size_t k = 0; k < crack.path.size(); ++k)
-        csv.row(k, crack.path[k].x, crack.path[k].y, crack.load_factor, crack.load_factor / crack.site.load_factor);
-      local::write_vtu(scene.output_directory + "/nucleation_pd.vtu", model, state);
+      CsvFile csv(scene.output_directory + "/nucleation.csv", "crack,site,vertex,x_m,y_m,lambda,lambda_over_lambda_i");
+      for (std::size_t c = 0; c < cracks.size(); ++c)
+        for (std::size_t k = 0; k < cracks[c].path.size(); ++k)
+          csv.row(c + 1, numbers[c], k, cracks[c].path[k].x, cracks[c].path[k].y, cracks[c].load_factor,
+                  cracks[c].load_factor / cracks[c].site.load_factor);
     }
   } // namespace
 
@@ -122,7 +145,7 @@ namespace pumpd::coupling
     const double depth = body.clearance(site);
     if (depth > horizon)
       throw InvalidParameter("Initial cracks", "none",
-                             "the first initiation site " + geometry::to_text(site) + " lies " + pumpd::to_text(depth, 4) +
+                             "the initiation site " + geometry::to_text(site) + " lies " + pumpd::to_text(depth, 4) +
                                " m inside the body, more than a horizon (" + pumpd::to_text(horizon, 4) +
                                " m) from its outline and holes: a crack starting there would have two tips, and "
                                "nucleation forms edge cracks only (from a mouth on the boundary); give the crack to "
@@ -140,29 +163,36 @@ namespace pumpd::coupling
     return depth(t) >= depth(-1. * t) ? t : -1. * t;
   }
 
-  NucleatedCrack nucleate(const Scene &scene, const GlobalLocalSettings &settings, const InitiationSettings &initiation,
-                          const InitiationSite &site, std::ostream &out)
+  NucleatedCrack nucleate(const Scene &scene, GlobalProblem &global, const GlobalLocalSettings &settings,
+                          const InitiationSettings &initiation, const InitiationSite &site, std::size_t number,
+                          std::ostream &out)
   {
-    const auto  &pd    = settings.pd;
-    const Point  mouth = nucleation_mouth(scene.body, site.position, pd.horizon);
-    const Point  t     = opening_direction(scene.body, mouth, site.direction, pd.horizon);
+    const auto &pd = settings.pd;
+    NucleatedCrack crack;
+    crack.site = site;
+    Point mouth;
+    try
+      {
+        mouth = nucleation_mouth(scene.body, site.position, pd.horizon);
+      }
+    catch (const InvalidParameter &interior)
+      {
+        crack.refusal = interior;
+        return crack;
+      }
+    const Point  t = opening_direction(scene.body, mouth, site.direction, pd.horizon);
+    const double h = pd.spacing();
 
-    GlobalProblem global(scene, settings.global);
-    global.solve_uncracked();
-    // Centred at the mouth, with room for the longest crack between the mouth and the no-fail band
-    // of every layer: half a side at least the layer, the band and the Maximum advance.
     BoxSettings box = settings.cycle.box;
     box.horizon     = pd.horizon;
-    box.spacing     = pd.spacing();
+    box.spacing     = h;
     box.behind      = 0.5;
-    box.size        = std::max(box.size, 2. * ((1. + layer_clearance) * pd.horizon + settings.cycle.exchange.max_advance));
+    box.size        = box_side(settings);
     box.max_size    = std::max(box.max_size, box.size);
     BoxPolicy boxes(scene.body, box);
 
-    NucleatedCrack crack;
-    crack.site = site;
-    crack.box  = boxes.place(mouth, t);
-    const local::Region    region{scene.body, crack.box, {{mouth, mouth + pd.spacing() * t}}};
+    crack.box = boxes.place(mouth, t);
+    const local::Region    region{scene.body, crack.box, {{mouth, mouth + h * t}}};
     const auto             material = pd.material(scene.material);
     const local::PdModel   model(material, pd.horizon, pd.horizon_over_spacing, region,
                                  layer_no_fail_zones(local::PdModel(material, pd.horizon, pd.horizon_over_spacing, region),
@@ -170,21 +200,20 @@ namespace pumpd::coupling
     const BoundaryTransfer transfer(global, model);
     crack.pd_nodes = model.nodes().size();
 
-    ExchangeSettings exchange  = settings.cycle.exchange;
-    exchange.first_load_factor = initiation.first_load_factor;
+    ExchangeSettings exchange     = settings.cycle.exchange;
+    exchange.first_load_factor    = initiation.first_load_factor;
     exchange.start_below_accepted = false;
     ExchangeController controller(exchange);
-    // The material node next to the mouth, where the ridge is traced from (header comment, 3).
-    const Point start = [&] {
-      const Point x    = mouth + 0.5 * pd.spacing() * t;
+    // The material node next to the mouth, where the ridge is traced from (header comment, 4).
+    TipState at_mouth;
+    {
+      const Point x    = mouth + 0.5 * h * t;
       std::size_t best = model.nodes().front();
       for (std::size_t i : model.nodes())
         if (geometry::norm(model.lattice().position(i) - x) < geometry::norm(model.lattice().position(best) - x))
           best = i;
-      return model.lattice().position(best);
-    }();
-    TipState at_mouth;
-    at_mouth.position             = start;
+      at_mouth.position = model.lattice().position(best);
+    }
     at_mouth.direction            = t;
     at_mouth.critical_load_factor = site.load_factor;
     const double allowed = std::min(exchange.max_advance, settings.growth.length_limit());
@@ -194,38 +223,57 @@ namespace pumpd::coupling
       return geometry::norm(path.back() - mouth) > pd.horizon && scene.body.clearance(path.back()) < pd.horizon;
     };
 
-    out << "nucleation at site 1 " << geometry::to_text(site.position) << ": mouth " << geometry::to_text(mouth)
-        << ", the crack along " << geometry::to_text(t, 4) << " (perpendicular to sigma_1); PD box [" << crack.box.x_min
-        << ", " << crack.box.x_max << "] x [" << crack.box.y_min << ", " << crack.box.y_max << "], delta "
-        << pd.horizon << " m, " << crack.pd_nodes << " PD nodes; states from " << exchange.first_load_factor
+    out << "nucleation at site " << number << " " << geometry::to_text(site.position) << ": "
+        << "mouth " << geometry::to_text(mouth) << ", the crack along "
+        << geometry::to_text(t, 4) << " (perpendicular to sigma_1); PD box [" << crack.box.x_min << ", "
+        << crack.box.x_max << "] x [" << crack.box.y_min << ", " << crack.box.y_max << "], delta " << pd.horizon
+        << " m, " << crack.pd_nodes << " PD nodes; states from " << exchange.first_load_factor
         << " lambda_i, lambda_i = " << site.load_factor << std::endl;
     const auto outcome = run_exchange(model, transfer, controller, {at_mouth}, {allowed}, arrives, pd, out, "lambda_i");
     crack.states     = outcome.states;
     crack.iterations = outcome.iterations;
+    if (!scene.output_directory.empty())
+      {
+        std::filesystem::create_directories(scene.output_directory);
+        local::write_vtu(pd_file(scene, number), model, outcome.state);
+      }
     if (!outcome.branching.empty())
-      throw InvalidParameter("Initial cracks", "none",
-                             "the damage that formed at the first initiation site " + geometry::to_text(site.position) +
-                               " branches, refused: " + outcome.branching);
+      {
+        crack.refusal = InvalidParameter("Initial cracks", "none",
+                                         "the damage that formed at " + site_name(number) + " " +
+                                           geometry::to_text(site.position) + " branches, refused: " + outcome.branching);
+        return crack;
+      }
     if (outcome.decision == ExchangeController::Decision::too_small)
       {
-        if (!scene.output_directory.empty())
-          local::write_vtu(scene.output_directory + "/nucleation_pd.vtu", model, outcome.state);
         const auto [z, at] = largest_stretch_ratio(model, outcome.state);
-        throw InvalidParameter("Maximum load factor", pumpd::to_text(exchange.max_load_factor),
-                               "no crack formed at the first initiation site " + geometry::to_text(site.position) +
-                                 " up to this many times lambda_i = " + pumpd::to_text(site.load_factor, 4) +
-                                 ": the elastic sigma_1 / sigma_s there reached " +
-                                 pumpd::to_text(outcome.load_factor, 4) + ", the largest bond stretch over its critical one " +
-                                 pumpd::to_text(z, 4) + " at " + geometry::to_text(at, 4) + " (the scene does not break)");
+        crack.refusal      = InvalidParameter(
+          "Maximum load factor", pumpd::to_text(exchange.max_load_factor),
+          "no crack formed at " + site_name(number) + " " + geometry::to_text(site.position) +
+            " up to this many times lambda_i = " + pumpd::to_text(site.load_factor, 4) +
+            ": the elastic sigma_1 / sigma_s there reached " + pumpd::to_text(outcome.load_factor, 4) +
+            ", the largest bond stretch over its critical one " + pumpd::to_text(z, 4) + " at " +
+            geometry::to_text(at, 4) + " (the scene does not break)");
+        return crack;
       }
-    auto path         = outcome.increments.front().path;
-    path[0]           = mouth;
-    crack.path        = truncate(path, allowed);
     crack.load_factor = outcome.load_factor * site.load_factor;
-    write_nucleation(scene, crack, model, outcome.state);
-    out << "nucleation: a crack of " << geometry::length(crack.path) << " m formed at lambda = " << crack.load_factor
-        << " (" << outcome.load_factor << " lambda_i): " << geometry::to_text(crack.path) << std::endl;
+    auto path  = outcome.increments.front().path;
+    path[0]    = mouth;
+    crack.path = truncate(path, allowed);
+    out << "nucleation at site " << number << ": a crack of " << geometry::length(crack.path) << " m formed at lambda = "
+        << crack.load_factor << " (" << outcome.load_factor << " lambda_i): " << geometry::to_text(crack.path) << std::endl;
     return crack;
+  }
+
+  std::vector<std::size_t> distinct_sites(const std::vector<InitiationSite> &sites, double same_site)
+  {
+    std::vector<std::size_t> distinct;
+    for (std::size_t k = 0; k < sites.size(); ++k)
+      if (std::none_of(distinct.begin(), distinct.end(), [&](std::size_t j) {
+            return geometry::norm(sites[j].position - sites[k].position) < same_site;
+          }))
+        distinct.push_back(k);
+    return distinct;
   }
 
   GlobalLocalResult run_global_local_from_initiation(const Scene &scene, const GlobalLocalSettings &settings,
@@ -233,12 +281,77 @@ namespace pumpd::coupling
   {
     const auto found = find_initiation(scene, settings.global, settings.pd, initiation);
     report_initiation(found, scene, out);
-    if (found.sites.size() > 1)
-      out << "nucleation: the first site only; the other " << found.sites.size() - 1
-          << " candidate site" << (found.sites.size() == 2 ? " is" : "s are") << " not tried\n";
-    const auto crack = nucleate(scene, settings, initiation, found.sites.front(), out);
-    Scene      cracked = scene;
-    cracked.cracks     = {crack.path};
+    GlobalProblem global(scene, settings.global);
+    global.solve_uncracked();
+
+    const auto                  checked = distinct_sites(found.sites, 0.5 * box_side(settings));
+    std::vector<SiteOutcome>    outcomes(found.sites.size());
+    std::vector<NucleatedCrack> formed;
+    std::vector<std::size_t>    formed_at; // the site of each formed crack
+    std::optional<InvalidParameter> first_refusal;
+    for (std::size_t k : checked)
+      {
+        outcomes[k].checked = true;
+        auto crack          = nucleate(scene, global, settings, initiation, found.sites[k], k + 1, out);
+        if (crack.refusal)
+          {
+            out << "nucleation at site " << k + 1 << ": no crack: " << crack.refusal->what() << "\n";
+            if (!first_refusal)
+              first_refusal = crack.refusal;
+            continue;
+          }
+        outcomes[k].formed      = true;
+        outcomes[k].load_factor = crack.load_factor;
+        formed.push_back(std::move(crack));
+        formed_at.push_back(k);
+      }
+    if (formed.empty())
+      {
+        write_initiation_sites(found, scene, outcomes);
+        throw *first_refusal;
+      }
+
+    // The initial cracks: those formed within one load increment of the lowest (header comment, 5).
+    const auto lowest = std::min_element(formed.begin(), formed.end(), [](const auto &a, const auto &b) {
+      return a.load_factor < b.load_factor;
+    });
+    const double until = lowest->load_factor + settings.cycle.exchange.load_increment * lowest->site.load_factor;
+    std::vector<NucleatedCrack> initial;
+    std::vector<std::size_t>    numbers;
+    for (std::size_t c = 0; c < formed.size(); ++c)
+      if (formed[c].load_factor <= until * (1. + 1e-9))
+        {
+          initial.push_back(formed[c]);
+          numbers.push_back(formed_at[c] + 1);
+          outcomes[formed_at[c]].crack = initial.size();
+        }
+    for (std::size_t k = 0; k < found.sites.size(); ++k)
+      {
+        out << "nucleation: site " << k + 1 << " " << geometry::to_text(found.sites[k].position) << ": ";
+        if (!outcomes[k].checked)
+          {
+            const auto same = std::min_element(checked.begin(), checked.end(), [&](std::size_t a, std::size_t b) {
+              return geometry::norm(found.sites[a].position - found.sites[k].position) <
+                     geometry::norm(found.sites[b].position - found.sites[k].position);
+            });
+            out << "the same site as site " << *same + 1 << " (within half a box side)\n";
+          }
+        else if (!outcomes[k].formed)
+          out << "checked, no crack\n";
+        else
+          out << "a crack at lambda = " << outcomes[k].load_factor
+              << (outcomes[k].crack ? ": initial crack " + std::to_string(outcomes[k].crack)
+                                    : std::string(": later than one load increment above the lowest, ") +
+                                        pumpd::to_text(lowest->load_factor) + ", not grown")
+              << "\n";
+      }
+    write_initiation_sites(found, scene, outcomes);
+    write_cracks(scene, initial, numbers);
+
+    Scene cracked = scene;
+    cracked.cracks.clear();
+    for (const auto &c : initial)
+      cracked.cracks.push_back(c.path);
     return run_global_local(cracked, settings, out);
   }
 } // namespace pumpd::coupling

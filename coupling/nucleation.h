@@ -1,38 +1,46 @@
-// A crack that starts where there was none (README, "Where a crack starts"): the PD body at the
-// first initiation site (initiation.h) is loaded by the uncracked body's displacement until its
-// damage forms a crack, which then grows as an initial crack would.
-//  1. The mouth: the point of the outline or a hole's rim nearest the site, which must lie within
+// A crack that starts where there was none (README, "Where a crack starts"): the PD body at an
+// initiation site (initiation.h) is loaded by the uncracked body's displacement until its damage
+// forms a crack, which then grows as an initial crack would.
+//  1. The sites checked: every candidate site, largest ratio first, except one that lies within
+//     half a nucleation box's side of a site already checked (the same site: it lies in that
+//     site's box, clear of its layer, where that box's crack forms). Each is checked on its own
+//     (steps 2-4), with its own box and load ladder.
+//  2. The mouth: the point of the outline or a hole's rim nearest the site, which must lie within
 //     a horizon of it (a site deeper inside would start an interior crack with two tips, which
-//     nucleation does not form: refused). The crack opens against sigma_1: it leaves the mouth along
-//     t perpendicular to sigma_1's direction, the sense that leads into the material.
-//  2. The PD box: BoxPolicy's box centred at the mouth (clipped to the body, grown to take in a
-//     nearby hole), a side of at least 2 (3 delta + Maximum advance) so that the longest crack
-//     stays clear of the layer's no-fail band below. The boundary transfer maps the uncracked
-//     global displacement per unit load factor onto its boundary layer. The bonds within two
-//     horizons of the layer stay linear elastic (a no-fail zone, as at full PD's pads): where the
-//     layer, held to the elastic field, meets a free surface of the softer PD body (its surface
-//     nodes lack bonds), the strain concentrates, and in a box whose stress hardly varies, such
-//     as a beam's tension face, the crack would form there instead of at the site. The body starts
+//     nucleation does not form: that site is refused). The crack opens against sigma_1: it leaves
+//     the mouth along t perpendicular to sigma_1's direction, the sense that leads into the material.
+//  3. The PD box: BoxPolicy's box centred at the mouth (clipped to the body, grown
+//     to take in a nearby hole), a side of at least 2 (3 delta + Maximum advance) so that the
+//     longest crack stays clear of the layer's no-fail band below. The boundary transfer maps the
+//     uncracked global displacement per unit load factor onto its boundary layer. The bonds within
+//     two horizons of the layer stay linear elastic (a no-fail zone, as at full PD's pads): where
+//     the layer, held to the elastic field, meets a free surface of the softer PD body (its surface
+//     nodes lack bonds), the strain concentrates, and in a box whose stress hardly varies, such as
+//     a beam's tension face, the crack would form there instead of at the site. The body starts
 //     with a flaw of one lattice spacing at the mouth along t (bonds across it broken): below the
 //     lattice's resolution as a crack, it is the imperfection the damage localises at, where the
 //     stress hardly varies over the box (without it, the box's own imperfections take that role).
-//  3. Quasi-static PD states along lambda = (first, first + dlambda, ...) lambda_i, lambda_i of
+//  4. Quasi-static PD states along lambda = (first, first + dlambda, ...) lambda_i, lambda_i of
 //     the site (sigma_1 = sigma_s), judged by the ExchangeController as an exchange is (exchange.h,
 //     the tip at the mouth and lambda_i in place of lambda_c): a state whose damage ridge, traced
 //     from the mouth along t (crack_extraction.h), is at least the Minimum advance long is a
-//     crack; one longer than the Maximum advance is repeated at a lower load, then truncated.
-//     None up to the Maximum load factor: the scene does not break (InvalidParameter naming it,
-//     with the largest sigma_1 / sigma_s of the elastic field and the largest bond stretch seen;
-//     the last PD state is written to nucleation_pd.vtu). The ridge is traced from the material
-//     node next to the mouth (at a re-entrant corner the mouth's own cell may have its node outside
-//     the body); the path then starts at the mouth.
-// Only the first site (the largest ratio) is tried; the other candidates within the margin are
-// listed (initiation_sites.csv) and left alone.
+//     crack; one longer than the Maximum advance is repeated at a lower load, then truncated. The
+//     ridge is traced from the material node next to the mouth (at a re-entrant corner the mouth's
+//     own cell may have its node outside the body); the path then starts at the mouth. No crack up to the Maximum load factor: the site
+//     does not break (InvalidParameter naming it, with the largest sigma_1 / sigma_s of the elastic
+//     field and the largest bond stretch seen). A ridge that branches is refused.
+//  5. The initial cracks: the cracks of the sites that formed one at a load factor within one
+//     Load increment (times the lambda_i of that site) of the lowest; the sites that formed
+//     later would have been unloaded by the first cracks, so they are reported, not grown. No
+//     site forms a crack: the first site's refusal is thrown.
 #pragma once
 
 #include <cstddef>
 #include <iosfwd>
+#include <optional>
+#include <vector>
 
+#include "error.h"
 #include "global_local.h"
 #include "initiation.h"
 
@@ -45,6 +53,7 @@ namespace pumpd::coupling
     double             load_factor = 0.;  ///< lambda of the state that formed it
     geometry::Box      box;
     std::size_t        pd_nodes = 0, states = 0, iterations = 0;
+    std::optional<InvalidParameter> refusal; ///< why no crack formed at the site (then no path)
   };
 
   /// The point of the body's outline or a hole's rim nearest p.
@@ -60,16 +69,23 @@ namespace pumpd::coupling
   geometry::Point opening_direction(const geometry::Body &body, geometry::Point mouth, geometry::Point sigma1,
                                     double horizon);
 
-  /// Forms the crack at `site` (header comment); progress to `out`. Writes nucleation.csv (the
-  /// path, the load factor) and nucleation_pd.vtu (the PD state that formed it) to the scene's
-  /// output directory. Throws InvalidParameter for an interior site, a branching ridge, or no
-  /// crack up to the Maximum load factor.
-  NucleatedCrack nucleate(const Scene &scene, const GlobalLocalSettings &settings, const InitiationSettings &initiation,
-                          const InitiationSite &site, std::ostream &out);
+  /// Forms the crack at `site` (header comment, 2-4) in the uncracked solution `global`; progress
+  /// to `out`, the site named by `number`. Writes nucleation_pd.vtu (the first site),
+  /// nucleation_pd_<number>.vtu (the others: the last PD state) to the scene's output directory.
+  /// No crack (an interior site, a branching ridge, none up to the Maximum load factor): the
+  /// refusal, no path.
+  NucleatedCrack nucleate(const Scene &scene, GlobalProblem &global, const GlobalLocalSettings &settings,
+                          const InitiationSettings &initiation, const InitiationSite &site, std::size_t number,
+                          std::ostream &out);
+
+  /// The sites checked (header comment, 1): indices into `sites`, closer than `same_site` to no
+  /// site before them in the list.
+  std::vector<std::size_t> distinct_sites(const std::vector<InitiationSite> &sites, double same_site);
 
   /// The global-local method on a scene without a crack: its initiation sites (printed and written,
-  /// initiation.h), the crack nucleated at the first, then the cycle grows it as the scene's
-  /// initial crack.
+  /// initiation.h), a crack nucleated at each distinct one, the sites' outcomes (printed, and
+  /// columns of initiation_sites.csv), the initial cracks written to nucleation.csv; then the cycle
+  /// grows them together.
   GlobalLocalResult run_global_local_from_initiation(const Scene &scene, const GlobalLocalSettings &settings,
                                                      const InitiationSettings &initiation, std::ostream &out);
 } // namespace pumpd::coupling

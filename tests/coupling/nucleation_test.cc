@@ -4,15 +4,21 @@
 // - The mouth and direction on a plain body: a site near an edge or a hole's rim opens at the
 //   nearest boundary point, perpendicular to sigma_1 into the material; a site more than a horizon
 //   inside the body (a crack with two tips) is refused with one message naming Initial cracks.
+//   Sites within half a box side of one before them are the same site.
 // - The unnotched beam in three-point bending (prm/unnotched-beam.prm): the crack starts at
 //   mid-span on the bottom edge (within a horizon) and grows up, within a horizon of the mid-span
 //   line, at least three horizons; nucleation.csv holds its path and load factor.
 // - The L-shaped panel without a pre-crack (prm/l-panel-initiation.prm): the first site is the
 //   re-entrant corner (within half a cell), the crack starts there and grows into the panel, to
 //   the left and not down into the held leg.
-// - The strip with a hole (prm/plate-hole.prm): two sites on the rim; the crack starts at the first,
-//   its mouth within a horizon of a Kirsch point, and runs across the load (within 10 degrees of
-//   x over its first three horizons).
+// - The strip with a hole (prm/plate-hole.prm): two sites on the rim, mirror images; both are
+//   checked and both form a crack within one load increment, so two cracks start, one at each
+//   Kirsch point (mouths within a horizon), and grow together across the load (within 10 degrees
+//   of x over their first three horizons). The scene is symmetric about x = 0.05: the second
+//   crack's path mirrored about it lies within two PD spacings of the first's (Hausdorff, tips
+//   included). Each crack's tip is read off the damage on its own box's lattice, and each box's
+//   states stop at their own load of the ladder, so the two tips may differ by about a spacing
+//   per exchange.
 // - A scene that does not break up to the Maximum load factor says so in one message, with the
 //   elastic sigma_1 / sigma_s at the site and the largest bond stretch seen.
 // Coarse settings (m = 4, two exchanges after the nucleation) keep each run well under a minute.
@@ -27,6 +33,7 @@
 #include "error.h"
 #include "metric.h"
 #include "nucleation.h"
+#include "path_metrics.h"
 #include "expect_invalid.h"
 #include "scene_file.h"
 
@@ -49,17 +56,22 @@ namespace
   {
     coupling::Scene             scene;
     coupling::GlobalLocalResult result;
-    geometry::Polyline          nucleated; ///< from nucleation.csv
+    geometry::Polyline          nucleated; ///< the first crack of nucleation.csv
+    std::size_t                 cracks = 0; ///< the initial cracks of nucleation.csv
     double                      lambda = 0., lambda_over_lambda_i = 0.;
   };
 
   Run run(const coupling::Parameters &p)
   {
-    Run r{coupling::build_scene(p.scene), {}, {}};
+    Run r{coupling::build_scene(p.scene), {}, {}, 0};
     r.result    = coupling::run_global_local_from_initiation(r.scene, p.global_local_settings(), p.initiation, std::cout);
     const auto rows = read_csv_rows(p.scene.output_directory + "/nucleation.csv");
     for (const auto &row : rows)
-      r.nucleated.push_back({std::stod(row.at("x_m")), std::stod(row.at("y_m"))});
+      {
+        r.cracks = std::max<std::size_t>(r.cracks, std::stoul(row.at("crack")));
+        if (row.at("crack") == "1")
+          r.nucleated.push_back({std::stod(row.at("x_m")), std::stod(row.at("y_m"))});
+      }
     if (!rows.empty())
       {
         r.lambda               = std::stod(rows[0].at("lambda"));
@@ -106,11 +118,21 @@ TEST(NucleationMouth, AnInteriorSiteIsRefused)
   const geometry::Body body(geometry::Box{0., 0., 1., 0.5});
   const auto text = test::invalid_message([&] { coupling::nucleation_mouth(body, {0.3, 0.2}, 0.01); });
   std::cout << text << "\n";
-  EXPECT_EQ(text.rfind("Initial cracks = none: the first initiation site (0.3, 0.2) lies 0.2 m inside the body, more "
+  EXPECT_EQ(text.rfind("Initial cracks = none: the initiation site (0.3, 0.2) lies 0.2 m inside the body, more "
                        "than a horizon (0.01 m)",
                        0),
             0u);
   EXPECT_NE(text.find("two tips"), std::string::npos);
+}
+
+TEST(NucleationSites, ThoseWithinADistanceOfOneBeforeAreTheSameSite)
+{
+  std::vector<coupling::InitiationSite> sites(4);
+  sites[0].position = {0., 0.};
+  sites[1].position = {0.02, 0.};  // within 0.03 of the first
+  sites[2].position = {0.05, 0.};  // a site of its own
+  sites[3].position = {0.07, 0.};  // within 0.03 of the third
+  EXPECT_EQ(coupling::distinct_sites(sites, 0.03), (std::vector<std::size_t>{0, 2}));
 }
 
 TEST(Nucleation, BeamCrackStartsAtMidSpanAndGrowsUp)
@@ -156,22 +178,41 @@ TEST(Nucleation, LPanelCrackStartsAtTheReentrantCorner)
   EXPECT_GT(geometry::length(r.result.path), geometry::length(r.nucleated));
 }
 
-TEST(Nucleation, PlateWithAHoleCrackStartsAtAKirschPointAcrossTheLoad)
+TEST(Nucleation, PlateWithAHoleTwoCracksStartAtKirschsPointsAcrossTheLoad)
 {
   const auto   p     = coarse("prm/plate-hole.prm", "nucleation_hole", 2);
   const auto   r     = run(p);
-  const double delta = p.pd.horizon;
+  const double delta = p.pd.horizon, h = p.pd.spacing();
+  test::metric("initiation.hole.cracks_formed", double(r.cracks));
+  ASSERT_EQ(r.cracks, 2u);
+  ASSERT_EQ(r.result.paths.size(), 2u);
   ASSERT_GE(r.nucleated.size(), 2u);
-  const Point  mouth = r.nucleated.front();
-  const double position_err =
-    std::min(geometry::norm(mouth - Point{0.04, 0.1}), geometry::norm(mouth - Point{0.06, 0.1})) / delta;
-  const Point  chord = at_length(r.result.path, 3. * delta) - mouth;
-  const double angle = std::abs(std::atan2(chord.y, std::abs(chord.x))) * 180. / M_PI;
+  double position_err = 0., angle = 0.;
+  for (const auto &path : r.result.paths)
+    {
+      const Point mouth = path.front();
+      position_err      = std::max(position_err, std::min(geometry::norm(mouth - Point{0.04, 0.1}),
+                                                          geometry::norm(mouth - Point{0.06, 0.1})) / delta);
+      const Point chord = at_length(path, 3. * delta) - mouth;
+      angle             = std::max(angle, std::abs(std::atan2(chord.y, std::abs(chord.x))) * 180. / M_PI);
+      EXPECT_GT(std::abs(chord.x), 2. * delta); // away from the hole
+    }
+  // One crack at each point: the mouths on either side of the hole.
+  EXPECT_LT((r.result.paths[0].front().x - 0.05) * (r.result.paths[1].front().x - 0.05), 0.);
+  // The second mirrored about the hole's vertical axis onto the first.
+  geometry::Polyline mirrored;
+  for (const auto &x : r.result.paths[1])
+    mirrored.push_back({0.1 - x.x, x.y});
+  const double asymmetry = coupling::path_distance(r.result.paths[0], mirrored, 0.1 * h).hausdorff / h;
+  std::cout << "grown: " << geometry::to_text(r.result.paths[0]) << " | " << geometry::to_text(r.result.paths[1])
+            << "; lengths " << geometry::length(r.result.paths[0]) << ", " << geometry::length(r.result.paths[1]) << "\n";
   test::metric("initiation.hole.nucleated_position_err_over_delta", position_err);
   test::metric("initiation.hole.first_horizons_angle_deg", angle);
+  test::metric("initiation.hole.asymmetry_over_h", asymmetry);
   EXPECT_LE(position_err, 1.);
   EXPECT_LT(angle, 10.);
-  EXPECT_GT(std::abs(chord.x), 2. * delta); // away from the hole
+  EXPECT_LE(asymmetry, 2.);
+  EXPECT_GT(geometry::length(r.result.paths[0]), geometry::length(r.nucleated)); // the cycle grew them
 }
 
 TEST(Nucleation, ASceneThatDoesNotBreakSaysSo)
