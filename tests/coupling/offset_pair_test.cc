@@ -24,6 +24,7 @@
 #include <iostream>
 #include <limits>
 #include <sstream>
+#include <utility>
 
 #include "csv.h"
 #include "full_pd.h"
@@ -71,6 +72,20 @@ namespace
 
   /// The path from the initial tip on (the offset pair's initial cracks are single segments).
   geometry::Polyline grown(const geometry::Polyline &path) { return {path.begin() + 1, path.end()}; }
+
+  /// Checks that both cracks grew 10 mm past the other's initial tip (at x = 0.07 and 0.13 m) and
+  /// turned towards each other by more than two spacings h; returns how far each ended off its
+  /// initial plane (y = 0.04 and 0.06 m), towards the other [m].
+  std::pair<double, double> turns_towards_each_other(const geometry::Polyline &left, const geometry::Polyline &right,
+                                                     double h)
+  {
+    EXPECT_GT(left.back().x, 0.07 + 0.01);
+    EXPECT_LT(right.back().x, 0.13 - 0.01);
+    const double left_turn = left.back().y - 0.04, right_turn = 0.06 - right.back().y;
+    EXPECT_GT(left_turn, 2. * h);
+    EXPECT_GT(right_turn, 2. * h);
+    return {left_turn, right_turn};
+  }
 } // namespace
 
 TEST(OffsetPair, LefmGrowthTurnsTheTipsTowardsEachOther)
@@ -103,7 +118,9 @@ TEST(OffsetPair, LefmGrowthTurnsTheTipsTowardsEachOther)
         {
           const bool critical = tip->critical_load_factor <= smallest * (1. + tolerance);
           if (a.step < p.lefm.max_steps) // at the last step allowed no tip grows
-            EXPECT_EQ(tip->increment > 0., critical) << "step " << tip->step << ", tip " << tip->tip;
+            {
+              EXPECT_EQ(tip->increment > 0., critical) << "step " << tip->step << ", tip " << tip->tip;
+            }
         }
       together |= a.increment > 0. && b.increment > 0.;
       waited |= (a.increment > 0.) != (b.increment > 0.);
@@ -163,12 +180,7 @@ TEST(OffsetPair, GlobalLocalTurnsTheTipsTowardsEachOther)
   const auto &r  = global_local_run();
   ASSERT_EQ(r.paths.size(), 2u);
   const auto &left = r.paths[0], &right = r.paths[1];
-  EXPECT_GT(left.back().x, 0.07 + 0.01);
-  EXPECT_LT(right.back().x, 0.13 - 0.01);
-  const double h          = gl.pd.spacing();
-  const double left_turn  = left.back().y - 0.04, right_turn = 0.06 - right.back().y;
-  EXPECT_GT(left_turn, 2. * h);
-  EXPECT_GT(right_turn, 2. * h);
+  const auto [left_turn, right_turn] = turns_towards_each_other(left, right, gl.pd.spacing());
   const bool joined = r.stop_reason.find("joined crack") != std::string::npos;
   if (joined)
     EXPECT_LT(std::min(distance(left.back(), right), distance(right.back(), left)), 1e-9);
@@ -211,12 +223,7 @@ TEST(OffsetPair, DISABLED_FullPdAgainstGlobalLocal)
   std::cout << "full PD left " << geometry::to_text(left) << "\nfull PD right " << geometry::to_text(right)
             << "\nglobal-local left " << geometry::to_text(g.paths[0]) << "\nglobal-local right "
             << geometry::to_text(g.paths[1]) << "\n";
-  EXPECT_GT(left.back().x, 0.07 + 0.01);
-  EXPECT_LT(right.back().x, 0.13 - 0.01);
-  const double h          = fp.pd.spacing();
-  const double left_turn  = left.back().y - 0.04, right_turn = 0.06 - right.back().y;
-  EXPECT_GT(left_turn, 2. * h);
-  EXPECT_GT(right_turn, 2. * h);
+  const auto [left_turn, right_turn] = turns_towards_each_other(left, right, fp.pd.spacing());
   if (r.joined)
     {
       EXPECT_LT(std::min(distance(left.back(), right), distance(right.back(), left)), 1e-9);
