@@ -23,6 +23,11 @@ namespace pumpd::coupling
                       "A bond fails for good beyond this multiple of its inflection stretch S_c = 1 / sqrt(2 beta "
                       "|xi|); the decks use 10.",
                       Patterns::Double(1.));
+    prm.add_parameter("Bond law in compression", compression,
+                      "A shortened bond softens and fails by Lipton's law, as a stretched one does (softening), or "
+                      "stays linear elastic and never fails (linear): a body squeezed harder than it is pulled, "
+                      "like a Brazilian disc, needs linear.",
+                      Patterns::Selection("softening|linear"));
     prm.add_parameter("Relaxation tolerance", tolerance,
                       "Dynamic relaxation stops when |f| / (k |u - u_rigid|) falls below this (u_rigid: the best-fit "
                       "rigid motion of the PD body).",
@@ -50,6 +55,7 @@ namespace pumpd::coupling
     p.plane_strain    = m.plane_strain;
     p.influence       = local::influence_from_string(influence);
     p.break_factor    = break_factor;
+    p.compression     = local::compression_from_string(compression);
     return p;
   }
 } // namespace pumpd::coupling

@@ -22,6 +22,7 @@ namespace pumpd::coupling
     int          horizon_over_spacing = 8;     ///< m = delta / h
     std::string  influence            = "linear";
     double       break_factor         = 10.;
+    std::string  compression          = "softening";
     double       tolerance            = 1e-5;   ///< dynamic relaxation residual
     unsigned int max_iterations       = 200000; ///< dynamic relaxation iterations per state
     double       crack_damage         = 0.3;    ///< nodes above this damage lie on the crack

@@ -20,6 +20,20 @@ namespace pumpd::local
     return influence == Influence::constant ? "constant" : "linear";
   }
 
+  Compression compression_from_string(const std::string &name)
+  {
+    if (name == "softening")
+      return Compression::softening;
+    if (name == "linear")
+      return Compression::linear;
+    throw InvalidParameter("Bond law in compression", name, "one of softening|linear");
+  }
+
+  std::string to_string(Compression compression)
+  {
+    return compression == Compression::softening ? "softening" : "linear";
+  }
+
   LiptonMaterial::LiptonMaterial(const MaterialParameters &parameters, double horizon)
     : p(parameters)
     , delta(horizon)

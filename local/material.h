@@ -17,6 +17,11 @@
 //
 // A bond fails for good when |S| exceeds break_factor times the inflection stretch
 // S_c(r) = 1 / sqrt(2 beta r) (where the bond force peaks); the decks use 10.
+//
+// Lipton's g depends on S^2: a bond softens and fails when shortened as when stretched. With
+// Compression::linear a shortened bond (S < 0) keeps the force and energy of the linearised law,
+// psi = J C beta |xi|^2 S^2 / (delta |B_delta|) (g(r) ~ C beta r), and never fails, as bonds
+// do in Silling's prototype microelastic brittle model.
 #pragma once
 
 #include <string>
@@ -32,6 +37,16 @@ namespace pumpd::local
   Influence   influence_from_string(const std::string &name);
   std::string to_string(Influence influence);
 
+  /// The bond law of a shortened bond (S < 0).
+  enum class Compression
+  {
+    softening, ///< Lipton's g(|xi| S^2), as in tension
+    linear     ///< the linearised law; the bond never fails
+  };
+
+  Compression compression_from_string(const std::string &name);
+  std::string to_string(Compression compression);
+
   struct MaterialParameters
   {
     double    youngs_modulus  = 2.4e9; ///< E [Pa]
@@ -40,6 +55,7 @@ namespace pumpd::local
     bool      plane_strain    = true;  ///< nu = 1/4 (plane strain) or 1/3 (plane stress)
     Influence influence       = Influence::linear;
     double    break_factor    = 10.;   ///< bond fails at break_factor * S_c
+    Compression compression   = Compression::softening;
   };
 
   class LiptonMaterial
@@ -66,6 +82,8 @@ namespace pumpd::local
     double influence(double r_over_delta) const;
     /// S_c(r) = 1 / sqrt(2 beta r), the stretch of peak bond force.
     double inflection_stretch(double r) const;
+    /// Whether a bond at stretch S follows Lipton's softening law (else the linear one).
+    bool softens(double S) const { return S > 0. || p.compression == Compression::softening; }
     /// 1 / (delta |B_delta|) = 1 / (pi delta^3).
     double normalisation() const { return norm; }
 

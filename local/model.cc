@@ -365,6 +365,8 @@ namespace pumpd::local
   // The hot loop. For one row and one stencil offset, 64 consecutive nodes i and their partners
   // j = i + off are contiguous, so the bond stretch, failure test and force vectorise; the
   // forces go to a small buffer first and are then added to i and subtracted from j (Newton 3).
+  // A shortened bond under the linear law in compression is softened by nothing (x = 0).
+  template <bool linear_in_compression>
   void PdModel::forces_in_rows(State &s, std::size_t row_begin, std::size_t row_end,
                                double &dissipated) const
   {
@@ -392,7 +394,7 @@ namespace pumpd::local
                 {
                   const std::size_t   i = i0 + l, j = i0 + l + off;
                   const double        S = ((ux[j] - ux[i]) * ex + (uy[j] - uy[i]) * ey) * inv_r;
-                  const double        x = beta_r * S * S;
+                  const double        x = linear_in_compression && S < 0. ? 0. : beta_r * S * S;
                   const std::uint64_t gone  = (dead >> l) & 1u;
                   const std::uint64_t fails = x > x_break ? 1u : 0u;
                   fresh |= (fails & ~gone) << l;
@@ -451,7 +453,10 @@ namespace pumpd::local
         {
 #pragma omp for schedule(static)
           for (std::size_t b = parity; b < blocks; b += 2)
-            forces_in_rows(s, b * height, std::min(ny, (b + 1) * height), dissipated[b]);
+            if (mat.parameters().compression == Compression::linear)
+              forces_in_rows<true>(s, b * height, std::min(ny, (b + 1) * height), dissipated[b]);
+            else
+              forces_in_rows<false>(s, b * height, std::min(ny, (b + 1) * height), dissipated[b]);
         }
     }
     for (double d : dissipated)
@@ -473,7 +478,7 @@ namespace pumpd::local
         // S and x as the kernel computes them (the same rounding: the undone dissipation cancels).
         const double inv_r = 1. / (st.length[k] * h), beta_r = mat.beta() * st.length[k] * h;
         const double S = ((s.ux[j] - s.ux[i]) * st.ex[k] + (s.uy[j] - s.uy[i]) * st.ey[k]) * inv_r;
-        const double x = beta_r * S * S;
+        const double x = mat.softens(S) ? beta_r * S * S : 0.;
         std::uint64_t &word = s.broken[k * plane_words + i / 64];
         const std::uint64_t mask = std::uint64_t(1) << (i % 64);
         double         kernel = 0.;
@@ -530,7 +535,7 @@ namespace pumpd::local
       const double S = ((s.ux[j] - s.ux[i]) * st.ex[k] + (s.uy[j] - s.uy[i]) * st.ey[k]) /
                        (st.length[k] * h);
       const double x = mat.beta() * st.length[k] * h * S * S;
-      e += 2. * volume * energy_coeff[k] * (is_linear(k, i) ? x : 1. - std::exp(-x));
+      e += 2. * volume * energy_coeff[k] * (is_linear(k, i) || !mat.softens(S) ? x : 1. - std::exp(-x));
     });
     return e;
   }
@@ -553,7 +558,7 @@ namespace pumpd::local
       all[j] += w;
       const double r = st.length[k] * h;
       const double S = ((s.ux[j] - s.ux[i]) * st.ex[k] + (s.uy[j] - s.uy[i]) * st.ey[k]) / r;
-      if (bit(s.broken, k * plane_words, i) || (std::abs(S) > mat.inflection_stretch(r) && !is_linear(k, i)))
+      if (bit(s.broken, k * plane_words, i) || (std::abs(S) > mat.inflection_stretch(r) && !is_linear(k, i) && mat.softens(S)))
         {
           lost[i] += w;
           lost[j] += w;
@@ -571,7 +576,7 @@ namespace pumpd::local
     for_each_existing_bond([&](std::size_t k, std::size_t i, std::size_t j) {
       const double r = st.length[k] * h;
       const double S = ((s.ux[j] - s.ux[i]) * st.ex[k] + (s.uy[j] - s.uy[i]) * st.ey[k]) / r;
-      const double ratio = std::abs(S) / mat.inflection_stretch(r);
+      const double ratio = mat.softens(S) ? std::abs(S) / mat.inflection_stretch(r) : 0.;
       z[i] = std::max(z[i], ratio);
       z[j] = std::max(z[j], ratio);
     });
@@ -588,7 +593,7 @@ namespace pumpd::local
       const double r = st.length[k] * h;
       const double S = ((s.ux[j] - s.ux[i]) * st.ex[k] + (s.uy[j] - s.uy[i]) * st.ey[k]) / r;
       const double x = mat.beta() * r * S * S;
-      const double g = energy_coeff[k] * (is_linear(k, i) ? x : 1. - std::exp(-x));
+      const double g = energy_coeff[k] * (is_linear(k, i) || !mat.softens(S) ? x : 1. - std::exp(-x));
       w[i] += g;
       w[j] += g;
     });

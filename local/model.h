@@ -150,7 +150,7 @@ namespace pumpd::local
     /// or softened past the inflection stretch S_c (Lipton's fracture set: such a bond has
     /// spent most of its fracture energy; by 3 S_c, 99 %).
     std::vector<double> damage(const State &s) const;
-    /// Per node: Z = max over its existing bonds of |S| / S_c(|xi|).
+    /// Per node: Z = max over its existing bonds that soften (material.h) of |S| / S_c(|xi|).
     std::vector<double> stretch_ratio(const State &s) const;
     /// Per node: elastic energy density W(x).
     std::vector<double> energy_density(const State &s) const;
@@ -170,6 +170,7 @@ namespace pumpd::local
     }
 
   private:
+    template <bool linear_in_compression>
     void forces_in_rows(State &s, std::size_t row_begin, std::size_t row_end, double &dissipated) const;
     template <class BondVisitor>
     void for_each_existing_bond(BondVisitor &&visit) const;

@@ -73,12 +73,13 @@ namespace pumpd::local
         for (std::size_t i = 0; i < g.x.size(); ++i)
           {
             const double t = t0 + (t1 - t0) * g.x[i], s = path.s(t), cos_t = std::cos(t), sin_t = std::sin(t);
-            const double reach = a * s * s > x_break ? x_break / (a * s * s) : 1.;
+            const bool   soft  = material.softens(s); // else a linear bond: exp(0), no break
+            const double reach = soft && a * s * s > x_break ? x_break / (a * s * s) : 1.;
             double       radial = 0.;
             for (std::size_t j = 0; j < g.x.size(); ++j)
               {
                 const double rho = reach * g.x[j];
-                radial += g.w[j] * material.influence(rho) * rho * rho * std::exp(-a * rho * s * s);
+                radial += g.w[j] * material.influence(rho) * rho * rho * (soft ? std::exp(-a * rho * s * s) : 1.);
               }
             const double common = (t1 - t0) * g.w[i] * s * reach * radial;
             sum.x += common * cos_t * cos_t;
@@ -86,11 +87,13 @@ namespace pumpd::local
           }
         return sum;
       };
-      // sin^2 t_b = (+-sqrt(x_break / a) - p_x) / (1 - p_x): the first bond (rho = 1) breaks.
+      // sin^2 t_b = (+-sqrt(x_break / a) - p_x) / (1 - p_x): the first bond (rho = 1) breaks; under
+      // the linear law in compression, the shortened bonds neither break nor soften: s = 0 instead.
+      const bool          linear_below = material.parameters().compression == Compression::linear;
       std::vector<double> ends{0.};
       if (a > 0. && path.px != 1.)
-        for (const double sign : {-1., 1.})
-          if (const double split = (sign * std::sqrt(x_break / a) - path.px) / (1. - path.px); split > 0. && split < 1.)
+        for (const double s_b : {linear_below ? 0. : -std::sqrt(x_break / a), std::sqrt(x_break / a)})
+          if (const double split = (s_b - path.px) / (1. - path.px); split > 0. && split < 1.)
             ends.push_back(std::asin(std::sqrt(split)));
       std::sort(ends.begin() + 1, ends.end());
       ends.push_back(0.5 * M_PI);

@@ -336,3 +336,51 @@ TEST(PdModel, RigidMotionsGiveNoForce)
   std::cout << "relative force: linearised rotation " << linear_rotation / reference
             << ", finite rotation " << finite_rotation / reference << "\n";
 }
+
+// Under the linear law in compression (material.h) an equibiaxial shortening far past the break
+// stretch (every bond at S = -eps, 30 times the break stretch of the longest bond) leaves every
+// bond intact, dissipates nothing, damages no node and is linear: twice the shortening gives
+// exactly twice the forces and four times the energy. Under Lipton's law the same shortening
+// breaks bonds; the same stretch in tension breaks them under either law.
+TEST(PdModel, LinearLawInCompressionNeverSoftens)
+{
+  const Region region = box_in_body();
+  MaterialParameters linear;
+  linear.compression = Compression::linear;
+  const PdModel lin(linear, delta, m, region), soft(MaterialParameters{}, delta, m, region);
+  const double  eps = 30. * MaterialParameters{}.break_factor * lin.material().inflection_stretch(max_bond_length(lin));
+
+  const auto strained = [&](const PdModel &model, double e) {
+    State s = model.initial_state();
+    for (std::size_t i : model.nodes())
+      {
+        const auto x = model.lattice().position(i);
+        s.ux[i]      = e * x.x;
+        s.uy[i]      = e * x.y;
+      }
+    model.compute_forces(s);
+    return s;
+  };
+
+  const std::size_t bonds = lin.intact_bonds(lin.initial_state());
+  const State       once = strained(lin, -eps), twice = strained(lin, -2. * eps);
+  EXPECT_EQ(lin.intact_bonds(once), bonds);
+  EXPECT_EQ(lin.intact_bonds(twice), bonds);
+  EXPECT_EQ(once.dissipated, 0.);
+  const auto damage = lin.damage(once);
+  EXPECT_EQ(*std::max_element(damage.begin(), damage.end()), 0.);
+  const auto z = lin.stretch_ratio(once);
+  EXPECT_EQ(*std::max_element(z.begin(), z.end()), 0.);
+  double f = 0., difference = 0.;
+  for (std::size_t i : lin.nodes())
+    {
+      f          = std::max(f, std::hypot(once.fx[i], once.fy[i]));
+      difference = std::max(difference, std::hypot(twice.fx[i] - 2. * once.fx[i], twice.fy[i] - 2. * once.fy[i]));
+    }
+  ASSERT_GT(f, 0.);
+  EXPECT_LT(difference, 1e-12 * f);
+  EXPECT_NEAR(lin.elastic_energy(twice) / lin.elastic_energy(once), 4., 1e-12);
+
+  EXPECT_LT(soft.intact_bonds(strained(soft, -eps)), bonds);
+  EXPECT_LT(lin.intact_bonds(strained(lin, eps)), bonds);
+}

@@ -129,6 +129,40 @@ TEST(Strength, LatticePeakMatchesTheFormula)
     }
 }
 
+// Under the linear law in compression (material.h) the bonds that uniaxial stress shortens (those
+// within 30 degrees of the lateral axis, s < 0) keep their linear force: the lattice's peak
+// matches the formula as closely as under Lipton's law. Paths that shorten no bond (uniaxial and
+// equibiaxial strain) do not see the law.
+TEST(Strength, LinearLawInCompressionMatchesTheLattice)
+{
+  for (int m : {4, 8})
+    for (Influence j : {Influence::constant, Influence::linear})
+      {
+        MaterialParameters p;
+        p.influence   = j;
+        p.compression = Compression::linear;
+        const double formula = peak_stress(LiptonMaterial(p, delta), StrainPath::uniaxial_stress).stress;
+        const auto   lattice = lattice_stress(p, m, StrainPath::uniaxial_stress);
+        const double err     = std::abs(lattice.peak - formula) / formula;
+        std::cout << "linear in compression, uniaxial stress, " << to_string(j) << " J, m = " << m << ": formula "
+                  << formula << " Pa, lattice " << lattice.peak << " Pa, rel. error " << err << "\n";
+        EXPECT_LT(err, 0.5 / (m * m)) << to_string(j) << ", m = " << m;
+        EXPECT_LT(lattice.curve_error, 0.5 / (m * m)) << to_string(j) << ", m = " << m;
+        EXPECT_LT(lattice.lateral, 0.5 / (m * m)) << to_string(j) << ", m = " << m;
+      }
+  for (Influence j : {Influence::constant, Influence::linear})
+    {
+      MaterialParameters soft, lin;
+      soft.influence = lin.influence = j;
+      lin.compression                = Compression::linear;
+      const LiptonMaterial a(soft, delta), b(lin, delta);
+      EXPECT_EQ(tensile_strength(a), tensile_strength(b));
+      EXPECT_EQ(peak_stress(a, StrainPath::equibiaxial).stress, peak_stress(b, StrainPath::equibiaxial).stress);
+      // The shortened bonds no longer soften: the lateral contraction they allow is smaller.
+      EXPECT_GT(peak_stress(b, StrainPath::uniaxial_stress).stress, peak_stress(a, StrainPath::uniaxial_stress).stress);
+    }
+}
+
 TEST(Strength, BreakStretchCutsThePeak)
 {
   for (int m : {4, 8})
