@@ -89,7 +89,7 @@ namespace pumpd::coupling
     }
 
     /// The side of a nucleation box (header comment, 3): room for the longest crack between the
-    /// mouth and the no-fail band of every layer.
+    /// mouth (or the centre) and the no-fail band of every layer.
     double box_side(const GlobalLocalSettings &settings)
     {
       return std::max(settings.cycle.box.size,
@@ -140,16 +140,10 @@ namespace pumpd::coupling
     return best;
   }
 
-  Point nucleation_mouth(const geometry::Body &body, Point site, double horizon)
+  std::optional<Point> nucleation_mouth(const geometry::Body &body, Point site, double horizon)
   {
-    const double depth = body.clearance(site);
-    if (depth > horizon)
-      throw InvalidParameter("Initial cracks", "none",
-                             "the initiation site " + geometry::to_text(site) + " lies " + pumpd::to_text(depth, 4) +
-                               " m inside the body, more than a horizon (" + pumpd::to_text(horizon, 4) +
-                               " m) from its outline and holes: a crack starting there would have two tips, and "
-                               "nucleation forms edge cracks only (from a mouth on the boundary); give the crack to "
-                               "grow as Initial cracks");
+    if (body.clearance(site) > horizon)
+      return std::nullopt;
     return nearest_boundary_point(body, site);
   }
 
@@ -167,21 +161,12 @@ namespace pumpd::coupling
                           const InitiationSettings &initiation, const InitiationSite &site, std::size_t number,
                           std::ostream &out)
   {
-    const auto &pd = settings.pd;
-    NucleatedCrack crack;
-    crack.site = site;
-    Point mouth;
-    try
-      {
-        mouth = nucleation_mouth(scene.body, site.position, pd.horizon);
-      }
-    catch (const InvalidParameter &interior)
-      {
-        crack.refusal = interior;
-        return crack;
-      }
-    const Point  t = opening_direction(scene.body, mouth, site.direction, pd.horizon);
-    const double h = pd.spacing();
+    const auto &pd    = settings.pd;
+    const auto  mouth = nucleation_mouth(scene.body, site.position, pd.horizon);
+    const Point t = mouth ? opening_direction(scene.body, *mouth, site.direction, pd.horizon)
+                          : Point{-site.direction.y, site.direction.x};
+    const Point centre = mouth ? *mouth : site.position;
+    const double h     = pd.spacing();
 
     BoxSettings box = settings.cycle.box;
     box.horizon     = pd.horizon;
@@ -191,12 +176,17 @@ namespace pumpd::coupling
     box.max_size    = std::max(box.max_size, box.size);
     BoxPolicy boxes(scene.body, box);
 
-    crack.box = boxes.place(mouth, t);
-    const local::Region    region{scene.body, crack.box, {{mouth, mouth + h * t}}};
+    NucleatedCrack crack;
+    crack.site     = site;
+    crack.interior = !mouth;
+    crack.box      = boxes.place(centre, t);
+    const geometry::Polyline flaw =
+      mouth ? geometry::Polyline{*mouth, *mouth + h * t} : geometry::Polyline{centre - 0.5 * h * t, centre + 0.5 * h * t};
+    const local::Region    region{scene.body, crack.box, {flaw}};
     const auto             material = pd.material(scene.material);
     const local::PdModel   model(material, pd.horizon, pd.horizon_over_spacing, region,
                                  layer_no_fail_zones(local::PdModel(material, pd.horizon, pd.horizon_over_spacing, region),
-                                                     pd.horizon, layer_clearance * pd.horizon));
+                                                     pd.horizon, (mouth ? layer_clearance : 0.) * pd.horizon));
     const BoundaryTransfer transfer(global, model);
     crack.pd_nodes = model.nodes().size();
 
@@ -204,32 +194,43 @@ namespace pumpd::coupling
     exchange.first_load_factor    = initiation.first_load_factor;
     exchange.start_below_accepted = false;
     ExchangeController controller(exchange);
-    // The material node next to the mouth, where the ridge is traced from (header comment, 4).
-    TipState at_mouth;
-    {
-      const Point x    = mouth + 0.5 * h * t;
-      std::size_t best = model.nodes().front();
-      for (std::size_t i : model.nodes())
-        if (geometry::norm(model.lattice().position(i) - x) < geometry::norm(model.lattice().position(best) - x))
-          best = i;
-      at_mouth.position = model.lattice().position(best);
-    }
-    at_mouth.direction            = t;
-    at_mouth.critical_load_factor = site.load_factor;
+    // The tips the ridge is traced from (header comment, 4): the material node next to the mouth,
+    // or the two ends of the interior flaw.
+    std::vector<TipState> tips(mouth ? 1 : 2);
+    if (mouth)
+      {
+        const Point x    = *mouth + 0.5 * h * t;
+        std::size_t best = model.nodes().front();
+        for (std::size_t i : model.nodes())
+          if (geometry::norm(model.lattice().position(i) - x) < geometry::norm(model.lattice().position(best) - x))
+            best = i;
+        tips[0].position  = model.lattice().position(best);
+        tips[0].direction = t;
+      }
+    else
+      {
+        tips[0].position  = flaw.back();
+        tips[0].direction = t;
+        tips[1].position  = flaw.front();
+        tips[1].direction = -1. * t;
+      }
+    for (auto &tip : tips)
+      tip.critical_load_factor = site.load_factor;
     const double allowed = std::min(exchange.max_advance, settings.growth.length_limit());
-    // The path has its mouth on the boundary; it arrives where its far end comes within a
-    // horizon of the outline or a hole.
+    // An increment arrives where its far end comes within a horizon of the outline or a hole (an
+    // edge crack's once it is a horizon from its mouth).
     const auto arrives = [&](const geometry::Polyline &path) {
-      return geometry::norm(path.back() - mouth) > pd.horizon && scene.body.clearance(path.back()) < pd.horizon;
+      return (!mouth || geometry::norm(path.back() - *mouth) > pd.horizon) && scene.body.clearance(path.back()) < pd.horizon;
     };
 
     out << "nucleation at site " << number << " " << geometry::to_text(site.position) << ": "
-        << "mouth " << geometry::to_text(mouth) << ", the crack along "
+        << (mouth ? "mouth " + geometry::to_text(*mouth) : std::string("interior, two tips from it")) << ", the crack along "
         << geometry::to_text(t, 4) << " (perpendicular to sigma_1); PD box [" << crack.box.x_min << ", "
         << crack.box.x_max << "] x [" << crack.box.y_min << ", " << crack.box.y_max << "], delta " << pd.horizon
         << " m, " << crack.pd_nodes << " PD nodes; states from " << exchange.first_load_factor
         << " lambda_i, lambda_i = " << site.load_factor << std::endl;
-    const auto outcome = run_exchange(model, transfer, controller, {at_mouth}, {allowed}, arrives, pd, out, "lambda_i");
+    const auto outcome = run_exchange(model, transfer, controller, tips, std::vector<double>(tips.size(), allowed),
+                                      arrives, pd, out, "lambda_i");
     crack.states     = outcome.states;
     crack.iterations = outcome.iterations;
     if (!scene.output_directory.empty())
@@ -257,9 +258,19 @@ namespace pumpd::coupling
         return crack;
       }
     crack.load_factor = outcome.load_factor * site.load_factor;
-    auto path  = outcome.increments.front().path;
-    path[0]    = mouth;
-    crack.path = truncate(path, allowed);
+    if (mouth)
+      {
+        auto path  = outcome.increments.front().path;
+        path[0]    = *mouth;
+        crack.path = truncate(path, allowed);
+      }
+    else
+      {
+        const auto ahead = truncate(outcome.increments[0].path, allowed);
+        const auto back  = truncate(outcome.increments[1].path, allowed);
+        crack.path.assign(back.rbegin(), back.rend());
+        crack.path.insert(crack.path.end(), ahead.begin(), ahead.end());
+      }
     out << "nucleation at site " << number << ": a crack of " << geometry::length(crack.path) << " m formed at lambda = "
         << crack.load_factor << " (" << outcome.load_factor << " lambda_i): " << geometry::to_text(crack.path) << std::endl;
     return crack;
