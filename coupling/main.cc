@@ -35,23 +35,26 @@ namespace
   /// that spins there holds its core while its sibling waits for one: on a machine shared with
   /// other work the PD states then take several times as long (docs/peridynamics.md). libgomp
   /// reads its waiting policy once, at start-up, so pumpd starts itself again with the passive
-  /// policy unless the user chose one.
-  void wait_passively_at_barriers(char **argv)
+  /// policy unless the user chose one. Loading pumpd's libraries takes most of a second, so only a
+  /// process that computes a scene starts again: a study's own process (its runs are processes of
+  /// their own, which inherit the policy), --help and --print-parameters only set it.
+  void wait_passively_at_barriers(char **argv, bool computes_a_scene)
   {
     if (std::getenv("OMP_WAIT_POLICY") != nullptr)
       return;
     setenv("OMP_WAIT_POLICY", "passive", 1);
-    execv("/proc/self/exe", argv);
+    if (computes_a_scene)
+      execv("/proc/self/exe", argv);
   }
 } // namespace
 
 int main(int argc, char **argv)
 {
-  wait_passively_at_barriers(argv);
-  // deal.II on one thread (its assembly sums in one order: the same results on any machine).
-  dealii::MultithreadInfo::set_thread_limit(1);
   const std::string arg   = argc > 1 ? argv[1] : "--help";
   const bool        study = arg == "--study" && argc == 3;
+  wait_passively_at_barriers(argv, argc == 2 && arg != "--help" && arg != "-h" && arg != "--print-parameters");
+  // deal.II on one thread (its assembly sums in one order: the same results on any machine).
+  dealii::MultithreadInfo::set_thread_limit(1);
   if (arg == "--help" || arg == "-h" || (argc > 2 && !study))
     {
       std::cout << usage;
