@@ -35,8 +35,8 @@ namespace
   /// that spins there holds its core while its sibling waits for one: on a machine shared with
   /// other work the PD states then take several times as long (docs/peridynamics.md). libgomp
   /// reads its waiting policy once, at start-up, so pumpd starts itself again with the passive
-  /// policy unless the user chose one. Loading pumpd's libraries takes most of a second, so only a
-  /// process that computes a scene starts again: a study's own process (its runs are processes of
+  /// policy unless the user chose one. Only a process that computes a scene starts again (loading
+  /// pumpd's libraries is slow): a study's own process (its runs are processes of
   /// their own, which inherit the policy), --help and --print-parameters only set it.
   void wait_passively_at_barriers(char **argv, bool computes_a_scene)
   {

@@ -88,6 +88,14 @@ namespace pumpd::coupling
       return zones;
     }
 
+    /// Whether `box` holds no point of the outline or a hole's rim (its circumscribed circle holds
+    /// none): its layer meets no free surface (header comment, 3).
+    bool in_the_open(const geometry::Body &body, const geometry::Box &box)
+    {
+      const Point centre{0.5 * (box.x_min + box.x_max), 0.5 * (box.y_min + box.y_max)};
+      return body.clearance(centre) > 0.5 * std::hypot(box.x_max - box.x_min, box.y_max - box.y_min);
+    }
+
     /// The side of a nucleation box (header comment, 3): room for the longest crack between the
     /// mouth (or the centre) and the no-fail band of every layer.
     double box_side(const GlobalLocalSettings &settings)
@@ -177,16 +185,16 @@ namespace pumpd::coupling
     BoxPolicy boxes(scene.body, box);
 
     NucleatedCrack crack;
-    crack.site     = site;
-    crack.interior = !mouth;
-    crack.box      = boxes.place(centre, t);
-    const geometry::Polyline flaw =
-      mouth ? geometry::Polyline{*mouth, *mouth + h * t} : geometry::Polyline{centre - 0.5 * h * t, centre + 0.5 * h * t};
+    crack.site = site;
+    crack.box  = boxes.place(centre, t);
+    const geometry::Polyline flaw = mouth ? geometry::Polyline{*mouth, *mouth + h * t}
+                                          : geometry::Polyline{centre - 0.5 * h * t, centre + 0.5 * h * t};
     const local::Region    region{scene.body, crack.box, {flaw}};
     const auto             material = pd.material(scene.material);
+    const double           band     = in_the_open(scene.body, crack.box) ? 0. : layer_clearance * pd.horizon;
     const local::PdModel   model(material, pd.horizon, pd.horizon_over_spacing, region,
                                  layer_no_fail_zones(local::PdModel(material, pd.horizon, pd.horizon_over_spacing, region),
-                                                     pd.horizon, (mouth ? layer_clearance : 0.) * pd.horizon));
+                                                     pd.horizon, band));
     const BoundaryTransfer transfer(global, model);
     crack.pd_nodes = model.nodes().size();
 
@@ -216,15 +224,19 @@ namespace pumpd::coupling
       }
     for (auto &tip : tips)
       tip.critical_load_factor = site.load_factor;
-    const double allowed = std::min(exchange.max_advance, settings.growth.length_limit());
+    // Each tip of an interior crack gets half of the Maximum crack length (less the flaw).
+    const double allowed =
+      std::min(exchange.max_advance, mouth ? settings.growth.length_limit() : 0.5 * (settings.growth.length_limit() - h));
     // An increment arrives where its far end comes within a horizon of the outline or a hole (an
     // edge crack's once it is a horizon from its mouth).
     const auto arrives = [&](const geometry::Polyline &path) {
-      return (!mouth || geometry::norm(path.back() - *mouth) > pd.horizon) && scene.body.clearance(path.back()) < pd.horizon;
+      const bool left_mouth = !mouth || geometry::norm(path.back() - *mouth) > pd.horizon;
+      return left_mouth && scene.body.clearance(path.back()) < pd.horizon;
     };
 
     out << "nucleation at site " << number << " " << geometry::to_text(site.position) << ": "
-        << (mouth ? "mouth " + geometry::to_text(*mouth) : std::string("interior, two tips from it")) << ", the crack along "
+        << (mouth ? "mouth " + geometry::to_text(*mouth) : std::string("interior, two tips from it"))
+        << ", the crack along "
         << geometry::to_text(t, 4) << " (perpendicular to sigma_1); PD box [" << crack.box.x_min << ", "
         << crack.box.x_max << "] x [" << crack.box.y_min << ", " << crack.box.y_max << "], delta " << pd.horizon
         << " m, " << crack.pd_nodes << " PD nodes; states from " << exchange.first_load_factor

@@ -17,8 +17,9 @@
 //     two horizons of the layer stay linear elastic (a no-fail zone, as at full PD's pads): where
 //     the layer, held to the elastic field, meets a free surface of the softer PD body (its surface
 //     nodes lack bonds), the strain concentrates, and in a box whose stress hardly varies, such as
-//     a beam's tension face, the crack would form there instead of at the site (an interior box,
-//     which has no free surface, has no such band). The body starts
+//     a beam's tension face, the crack would form there instead of at the site. A box that holds no
+//     point of the outline or a hole's rim (an interior site's, away from them) has no such band:
+//     its layer meets no free surface, and the crack has two horizons more room. The body starts
 //     with a flaw of one lattice spacing along t (bonds across it broken), from the mouth, or
 //     centred at the interior site: below the lattice's resolution as a crack, it is the
 //     imperfection the damage localises at, where the stress hardly varies over the box (without
@@ -54,8 +55,7 @@ namespace pumpd::coupling
 {
   struct NucleatedCrack
   {
-    geometry::Polyline path;              ///< edge crack: mouth first, tip last; interior: tip, centre, tip
-    bool               interior = false;  ///< two tips
+    geometry::Polyline path; ///< edge crack: mouth first, tip last; interior: tip, the flaw's ends, tip
     InitiationSite     site;
     double             load_factor = 0.;  ///< lambda of the state that formed it
     geometry::Box      box;
@@ -77,8 +77,9 @@ namespace pumpd::coupling
                                     double horizon);
 
   /// Forms the crack at `site` (header comment, 2-4) in the uncracked solution `global`; progress
-  /// to `out`, the site named by `number`. Writes nucleation_pd_<number>.vtu (the last PD state)
-  /// to the scene's output directory. No crack: the refusal, no path.
+  /// to `out`, the site named by `number`. Writes nucleation_pd.vtu (the first site),
+  /// nucleation_pd_<number>.vtu (the others: the last PD state) to the scene's output directory.
+  /// No crack (a branching ridge, none up to the Maximum load factor): the refusal, no path.
   NucleatedCrack nucleate(const Scene &scene, GlobalProblem &global, const GlobalLocalSettings &settings,
                           const InitiationSettings &initiation, const InitiationSite &site, std::size_t number,
                           std::ostream &out);

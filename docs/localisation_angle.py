@@ -7,8 +7,9 @@ law is C_ijkl = int c e_i e_j e_k e_l over the bonds, with a bond's tangent c ~ 
 exp(-x) (1 - 2 x), x = a rho s^2, s = cos^2 t - k sin^2 t, a = beta delta eps^2 (a shortened bond,
 s < 0, under the linear law in compression: c ~ J rho^2). A band with normal n can form once the
 acoustic tensor Q_ik(n) = C_ijkl n_j n_l = int c (e.n)^2 e_i e_k is singular (Rice 1976). For each
-k the script raises a until det Q(n) <= 0 for some n and prints that a and the angle of n from the
-tension axis (the band then runs at that angle from the perpendicular to the tension).
+k the script raises a in steps of 0.05 until det Q(n) <= 0 for some n (in steps of 2 degrees)
+and prints that a and the angle of n from the tension axis (the band then runs at that angle from
+the perpendicular to the tension).
 Linear J = 12 (1 - rho); pure Python, about a minute.
 """
 import math
@@ -23,9 +24,9 @@ for i in range(NR):
 
 
 def det_q(a, k, psi):
-    """det Q(n) / det Q_linear(n), n at psi from the tension axis."""
+    """det Q(n) / det Q_linear(n), n at psi from the tension axis (Q_linear: every bond linear)."""
     n0, n1 = math.cos(psi), math.sin(psi)
-    q11 = q22 = q12 = l11 = l22 = 0.
+    q11 = q22 = q12 = l11 = l22 = l12 = 0.
     for rho, w, c, s_ in BONDS:
         s = c * c - k * s_ * s_
         x = a * rho * s * s
@@ -36,7 +37,8 @@ def det_q(a, k, psi):
         q12 += tangent * en2 * c * s_
         l11 += w * en2 * c * c
         l22 += w * en2 * s_ * s_
-    return (q11 * q22 - q12 * q12) / (l11 * l22)
+        l12 += w * en2 * c * s_
+    return (q11 * q22 - q12 * q12) / (l11 * l22 - l12 * l12)
 
 
 for k in (0., 1. / 3., 1., 5. / 3.):

@@ -29,11 +29,6 @@ namespace pumpd::local
     throw InvalidParameter("Bond law in compression", name, "one of softening|linear");
   }
 
-  std::string to_string(Compression compression)
-  {
-    return compression == Compression::softening ? "softening" : "linear";
-  }
-
   LiptonMaterial::LiptonMaterial(const MaterialParameters &parameters, double horizon)
     : p(parameters)
     , delta(horizon)

@@ -20,7 +20,7 @@
 //
 // Lipton's g depends on S^2: a bond softens and fails when shortened as when stretched. With
 // Compression::linear a shortened bond (S < 0) keeps the force and energy of the linearised law,
-// psi = J C beta |xi|^2 S^2 / (delta |B_delta|) (g(r) ~ C beta r), and never fails, as bonds
+// psi = J C beta |xi| S^2 / (delta |B_delta|) (g(r) ~ C beta r), and never fails, as bonds
 // do in Silling's prototype microelastic brittle model.
 #pragma once
 
@@ -45,7 +45,6 @@ namespace pumpd::local
   };
 
   Compression compression_from_string(const std::string &name);
-  std::string to_string(Compression compression);
 
   struct MaterialParameters
   {

@@ -63,7 +63,8 @@ namespace pumpd::local
     /// Phi_x, Phi_y (strength.h) over the intact bonds, a rho s^2 <= x_break. The integrands are
     /// even about t = 0 and t = pi / 2, so four times the quarter; the quarter is split where the
     /// break cut-off rho < x_break / (a s^2) enters (s is monotone in t, and s = +-sqrt(x_break / a)
-    /// at most once each), so that each piece is smooth.
+    /// at most once each), or, under the linear law in compression, where s = 0 (the shortened
+    /// bonds' factor exp(-a rho s^2) becomes 1), so that each piece is smooth.
     Phi phi(const LiptonMaterial &material, const Path &path, double a)
     {
       const auto  &g       = rule();

@@ -6,12 +6,15 @@
 // with rho = |xi| / delta and a = beta delta epsilon^2
 //   sigma_yy = (2 C beta / pi) epsilon Phi_y(a),   sigma_xx = (2 C beta / pi) epsilon Phi_x(a),
 //   Phi_y(a) = int_0^1 J(rho) rho^2 int_0^{2 pi} s sin^2 t exp(-a rho s^2) dt drho  (cos^2 t: Phi_x),
-// the bonds past the break stretch (a rho s^2 > break_factor^2 / 2) left out. The paths:
+// the bonds past the break stretch (a rho s^2 > break_factor^2 / 2) left out; under the linear
+// law in compression (material.h) a shortened bond (s < 0, epsilon > 0) has exp(0) = 1 and never
+// breaks. The paths:
 // uniaxial strain p_x = 0, equibiaxial strain p_x = 1, uniaxial stress p_x = -q(a) with q the
 // root of Phi_x = 0 (1/3 while the bonds are linear: lambda = mu). With the calibration of
 // material.h sigma_yy = sqrt(2 / pi) sqrt(lambda G_c / delta) sqrt(a) Phi_y(a) / M: the peak over the
-// path is sigma_max = k sqrt(lambda G_c / delta), k depending only on J, the path and, for
-// break_factor below about 1.7, on the break stretch.
+// path is sigma_max = k sqrt(lambda G_c / delta), k depending only on J, the path, the law in
+// compression (for a path that shortens bonds) and, for break_factor below about 1.7, on the
+// break stretch.
 #pragma once
 
 #include "material.h"

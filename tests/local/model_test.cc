@@ -341,7 +341,8 @@ TEST(PdModel, RigidMotionsGiveNoForce)
 // stretch (every bond at S = -eps, 30 times the break stretch of the longest bond) leaves every
 // bond intact, dissipates nothing, damages no node and is linear: twice the shortening gives
 // exactly twice the forces and four times the energy. Under Lipton's law the same shortening
-// breaks bonds; the same stretch in tension breaks them under either law.
+// breaks bonds; the same stretch in tension breaks them under either law. The energy density and
+// a no-fail zone's correction follow the same law.
 TEST(PdModel, LinearLawInCompressionNeverSoftens)
 {
   const Region region = box_in_body();
@@ -383,4 +384,22 @@ TEST(PdModel, LinearLawInCompressionNeverSoftens)
 
   EXPECT_LT(soft.intact_bonds(strained(soft, -eps)), bonds);
   EXPECT_LT(lin.intact_bonds(strained(lin, eps)), bonds);
+
+  // The energy density sums to the energy (each bond at both ends).
+  const auto density = lin.energy_density(once);
+  double     sum     = 0.;
+  for (std::size_t i : lin.nodes())
+    sum += density[i] * lin.node_volume();
+  EXPECT_NEAR(sum / lin.elastic_energy(once), 1., 1e-10); // rounding of sums in other orders
+
+  // A no-fail zone (its bonds linear in tension too) changes nothing where every bond is shortened.
+  auto pad           = PrescribedRegion::box("pad", {0.045, 0.045, 0.055, 0.055}, true, true);
+  pad.elastic_margin = 0.;
+  const PdModel with_pad(linear, delta, m, region, {pad});
+  ASSERT_GT(with_pad.linear_bond_count(), 0u);
+  const State padded = strained(with_pad, -eps);
+  double      change = 0.;
+  for (std::size_t i : lin.nodes())
+    change = std::max(change, std::hypot(padded.fx[i] - once.fx[i], padded.fy[i] - once.fy[i]));
+  EXPECT_LT(change, 1e-12 * f);
 }
