@@ -268,7 +268,7 @@ namespace pumpd::coupling
     {
       const Point p = traced.back();
       double      u = 0., last = ridge_damage(damage, p, normal(t), h);
-      reason        = "the damage ridge ends";
+      reason        = ridge_ends;
       const bool   on_crack = last >= s.threshold;
       const double level    = on_crack ? 0.5 * face_damage(damage, traced, t0, w, h, s.threshold) : 0.;
       for (int k = 1; on_crack && last >= level && k <= int(std::ceil(16. * step / h)); ++k)
@@ -298,5 +298,18 @@ namespace pumpd::coupling
     }
     douglas_peucker(traced, 0, traced.size() - 1, tolerance, increment.path);
     return increment;
+  }
+
+  bool damage_connects(const DamageField &field, Point from, Point to, const ExtractionSettings &s)
+  {
+    const DamageSampler damage(field);
+    const double        h = field.spacing, length = geometry::norm(to - from);
+    if (!(length > h))
+      return false;
+    const Point e = (1. / length) * (to - from);
+    for (double u = h; u <= length; u += 0.25 * h)
+      if (!(ridge_damage(damage, from + u * e, normal(e), h) >= s.threshold))
+        return false;
+    return true;
   }
 } // namespace pumpd::coupling

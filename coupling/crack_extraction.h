@@ -47,6 +47,10 @@ namespace pumpd::coupling
     double simplification    = 0.;  ///< Douglas-Peucker tolerance [m]; 0: half a spacing
   };
 
+  /// The stop reason (its start) of a trace that ends in the material: no run above the threshold
+  /// across the predictor, within the turn limit.
+  inline constexpr char ridge_ends[] = "the damage ridge ends";
+
   struct CrackIncrement
   {
     geometry::Polyline path;        ///< path[0] == tip; path.size() == 1: no growth
@@ -65,4 +69,12 @@ namespace pumpd::coupling
   /// field, tip, direction or setting, CrackBranching where the ridge splits.
   CrackIncrement extract_crack(const DamageField &damage, geometry::Point tip, geometry::Point direction,
                                const ExtractionSettings &settings);
+
+  /// Whether the damage runs as a crack along the segment from `from` (a point of a trace) to `to`:
+  /// every h/4 from a spacing past `from` on, the largest damage within a spacing across the segment
+  /// is at least the threshold. The first spacing is not sampled: a trace ends where the ridge
+  /// damage has dropped to half the face damage, below the threshold. False for a segment not
+  /// longer than a spacing.
+  bool damage_connects(const DamageField &damage, geometry::Point from, geometry::Point to,
+                       const ExtractionSettings &settings);
 } // namespace pumpd::coupling

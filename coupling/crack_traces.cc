@@ -1,7 +1,10 @@
 #include "crack_traces.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+#include <optional>
+#include <tuple>
 
 #include "arrival.h"
 #include "path_metrics.h"
@@ -33,6 +36,56 @@ namespace pumpd::coupling
           }
       return f;
     }
+
+    /// A point `at` of crack `crack`'s face, `distance` from a point of a trace.
+    struct FacePoint
+    {
+      double      distance;
+      Point       at;
+      std::size_t crack;
+    };
+
+    /// The points of the cracks but `own` within `reach` of `end` and ahead of it (along `ahead`),
+    /// nearest first: on every segment its point nearest to `end` and points every `spacing` / 2.
+    std::vector<FacePoint> face_points_ahead(Point end, Point ahead, const std::vector<Polyline> &cracks,
+                                             std::size_t own, double reach, double spacing)
+    {
+      std::vector<FacePoint> found;
+      const auto             consider = [&](Point q, std::size_t c) {
+        if (const double r = geometry::norm(q - end); r < reach && geometry::dot(q - end, ahead) > 0.)
+          found.push_back({r, q, c});
+      };
+      for (std::size_t c = 0; c < cracks.size(); ++c)
+        for (std::size_t j = 0; c != own && j + 1 < cracks[c].size(); ++j)
+          {
+            const Point  a = cracks[c][j], w = cracks[c][j + 1] - a;
+            const double l = geometry::norm(w);
+            consider(a + std::clamp(geometry::dot(end - a, w) / (l * l), 0., 1.) * w, c);
+            for (double u = 0.; u <= l; u += 0.5 * spacing)
+              consider(a + (u / l) * w, c);
+          }
+      std::sort(found.begin(), found.end(),
+                [](const FacePoint &p, const FacePoint &q) { return p.distance < q.distance; });
+      return found;
+    }
+
+    /// The points of `line` within `length` of its end along it, every `step` from the end back,
+    /// each with the index of the segment it lies on (a single point: itself, segment 0).
+    std::vector<std::pair<Point, std::size_t>> last_stretch(const Polyline &line, double length, double step)
+    {
+      std::vector<std::pair<Point, std::size_t>> points;
+      if (line.size() == 1)
+        points.push_back({line[0], 0});
+      double back = 0.; // arc length from the end to line[k + 1]
+      for (std::size_t k = line.size() - 1; k-- > 0 && back <= length;)
+        {
+          const double l = geometry::norm(line[k + 1] - line[k]);
+          for (double u = std::ceil(back / step) * step; u <= std::min(back + l, length); u += step)
+            points.push_back({line[k + 1] + ((u - back) / l) * (line[k] - line[k + 1]), k});
+          back += l;
+        }
+      return points;
+    }
   } // namespace
 
   CrackTraces::CrackTraces(const std::vector<Polyline> &cracks, const geometry::Body &body, double tolerance)
@@ -58,21 +111,58 @@ namespace pumpd::coupling
     if (initial.size() == 1)
       return extract_crack(field, at, direction, settings);
     const DamageField own = without_other_cracks(field, others, tip.crack, crack_path(tip.crack, tips), clearance);
+    CrackIncrement    increment;
     try
       {
-        return extract_crack(own, at, direction, settings);
+        increment = extract_crack(own, at, direction, settings);
       }
     catch (const CrackBranching &)
       {
         // Another crack's new growth crosses the band of this tip's accepted path: traced on from
         // the accepted end instead.
-        const Point    end = tip.path.back(), last = tip.path[tip.path.size() - 2];
-        const auto     on  = extract_crack(own, end, (1. / geometry::norm(end - last)) * (end - last), settings);
-        CrackIncrement increment{Polyline(tip.path.begin() + long(tip.initial_size) - 1, tip.path.end()),
-                                 on.stop_reason};
+        const Point end = tip.path.back(), last = tip.path[tip.path.size() - 2];
+        const auto  on  = extract_crack(own, end, (1. / geometry::norm(end - last)) * (end - last), settings);
+        increment = {Polyline(tip.path.begin() + long(tip.initial_size) - 1, tip.path.end()), on.stop_reason};
         increment.path.insert(increment.path.end(), on.path.begin() + 1, on.path.end());
-        return increment;
       }
+    return turned_into_face(increment, tip, field, settings, clearance, others);
+  }
+
+  CrackIncrement CrackTraces::turned_into_face(CrackIncrement increment, const Tip &tip, const DamageField &field,
+                                               const ExtractionSettings &settings, double clearance,
+                                               const std::vector<Polyline> &others) const
+  {
+    if (increment.stop_reason.rfind(ridge_ends, 0) != 0)
+      return increment;
+    Polyline path(tip.path.begin(), tip.path.begin() + long(tip.initial_size));
+    path.insert(path.end(), increment.path.begin() + 1, increment.path.end());
+    const Point  ahead = path.back() - path[path.size() - 2];
+    const double h     = field.spacing;
+
+    // The shortest connected segment to a face ahead, from a point of the increment's last
+    // horizon: the end of a trace can lie past the corner where its ridge turns.
+    std::optional<FacePoint> face;
+    Point                    start;
+    std::size_t              cut = 0;
+    for (const auto &[s, k] : last_stretch(increment.path, settings.horizon, 0.5 * h))
+      for (const auto &f :
+           face_points_ahead(s, ahead, others, tip.crack, face ? face->distance : 3. * settings.horizon, h))
+        if (damage_connects(field, s, f.at, settings))
+          {
+            std::tie(face, start, cut) = std::tuple{f, s, k};
+            break;
+          }
+    if (!face)
+      return increment;
+    increment.path.resize(cut + 1);
+    if (geometry::norm(start - increment.path.back()) > 0.)
+      increment.path.push_back(start);
+    // It ends `clearance` in front of the face, as a ridge traced into a face does; accept() joins
+    // it to the face along its last segment.
+    if (const double length = geometry::norm(face->at - start); length > clearance)
+      increment.path.push_back(start + ((length - clearance) / length) * (face->at - start));
+    increment.stop_reason += "; the damage runs on into crack " + std::to_string(face->crack + 1) + "'s face";
+    return increment;
   }
 
   std::vector<CrackIncrement> CrackTraces::extract(const DamageField &field, const ExtractionSettings &settings,

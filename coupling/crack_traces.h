@@ -14,10 +14,21 @@
 // crosses that face (first_crossing), or where its last segment continued meets the face within
 // two horizons (ray_to_cracks: the ridge ends about half a horizon in front of the face, farther
 // along a slanting approach), else at the nearest point of a face within a horizon ahead of its end
-// (face_ahead); the tip joins that crack there. A tip that stopped keeps its
-// path; the others go on. Where another crack's new growth comes within the transverse window of
-// a tip's accepted path (its ridge would show it as a branch there), that tip is traced on from
-// its accepted end instead.
+// (face_ahead); the tip joins that crack there. A tip that stopped keeps its path; the others go
+// on. Where another crack's new growth comes within the transverse window of a tip's accepted path
+// (its ridge would show it as a branch there), that tip is traced on from its accepted end instead.
+//
+// A ridge that turns into another crack's face by more than the tracer follows ends the trace in
+// the material (extract_crack: "the damage ridge ends"): the transverse window, a horizon either
+// side of a point two spacings ahead, misses a ridge that turns at a vertex by more than
+// atan(delta / 2h) (63 degrees for m = 4), and the trace can run on past that corner where the
+// damage does. Such a trace joins the face
+// along the shortest straight segment from a point of its increment's last horizon to a point of
+// another crack's face within three horizons ahead (along its last segment) on which the damage is
+// connected (damage_connects: every sample above the extraction threshold). The path is cut at
+// that point and ends the clearance (half a horizon) in front of the face, where a ridge traced
+// into a face ends too; accept() joins it along its last segment. A scene with one crack is traced
+// without this rule.
 //
 // Cracks that join end the run, as in the other methods: the ridge of the crack joined would show
 // the joining crack's band as a branch at the junction.
@@ -74,6 +85,12 @@ namespace pumpd::coupling
     /// `clearance` where they are nearer than its own crack's accepted path.
     CrackIncrement trace(const Tip &tip, const DamageField &field, const ExtractionSettings &settings,
                          double clearance, const std::vector<geometry::Polyline> &others) const;
+    /// `increment` of `tip` where its ridge ends, continued towards another crack's face (of
+    /// `others`) along which the damage of `field` is connected, to `clearance` in front of it
+    /// (the rule above).
+    CrackIncrement turned_into_face(CrackIncrement increment, const Tip &tip, const DamageField &field,
+                                    const ExtractionSettings &settings, double clearance,
+                                    const std::vector<geometry::Polyline> &others) const;
     /// The crack's path from its tips: the second tip (at the mouth's end) reversed, then the first.
     geometry::Polyline crack_path(std::size_t crack, const std::vector<Tip> &tips) const;
     std::vector<geometry::Polyline> crack_paths(const std::vector<Tip> &tips) const;

@@ -7,6 +7,11 @@
 // - the left crack turns into the right one's face (once the right one has grown past): its path
 //   ends on that face within h of where the true crack meets it, the run stops with the join, and
 //   the right crack keeps its path within h;
+// - the left crack turns by 60 degrees into the right one's face at a corner past which its damage
+//   runs on straight for 5 mm (as PD damage runs on past a corner): the tracer follows the straight
+//   ridge to its end, where the turned ridge lies outside its window, and the trace joins the face
+//   along the damage that connects them (crack_traces.h), within two spacings of where the true
+//   crack meets it; the run stops with the join;
 // - an interior crack is traced from both tips: one path, within h of the true crack.
 #include <gtest/gtest.h>
 
@@ -106,6 +111,25 @@ TEST(CrackTraces, ATipThatReachesTheOtherCrackJoinsIt)
   EXPECT_TRUE(traces.joined());
   EXPECT_LT(distance_to_polyline(paths[0].back(), paths[1]), 1e-12) << "the left path ends on the right crack";
   EXPECT_LE(geometry::norm(paths[0].back() - meeting), h);
+  EXPECT_LE(hausdorff(paths[1], right), h);
+}
+
+TEST(CrackTraces, ARidgeThatTurnsIntoTheOtherCrackJoinsIt)
+{
+  CrackTraces    traces(initial, plate, 1e-9);
+  const Polyline right = {{0.1, 0.03}, {0.045, 0.03}};
+  const Point    corner{0.05, 0.02};
+  const Polyline left    = {initial[0].front(), corner, corner + Point{0.005, 0.}};
+  const Point    meeting = corner + 0.01 * Point{1. / std::tan(std::acos(-1.) / 3.), 1.};
+  EXPECT_EQ(trace(traces, {left, right}), "");
+  const std::string stop  = trace(traces, {left, {corner, meeting}, right});
+  const auto        paths = traces.paths();
+  ASSERT_EQ(paths.size(), 2u);
+  std::cout << "stop: " << stop << "\nleft " << geometry::to_text(paths[0]) << "\n";
+  EXPECT_NE(stop.find("crack 1 joined crack 2"), std::string::npos) << stop;
+  EXPECT_TRUE(traces.joined());
+  EXPECT_LT(distance_to_polyline(paths[0].back(), paths[1]), 1e-12) << "the left path ends on the right crack";
+  EXPECT_LE(geometry::norm(paths[0].back() - meeting), 2. * h);
   EXPECT_LE(hausdorff(paths[1], right), h);
 }
 
