@@ -34,13 +34,14 @@ namespace pumpd::geometry
            contains(Point{other.x_max, other.y_max}, tolerance);
   }
 
-  double distance_to_segment(Point p, Point a, Point b)
+  Point nearest_on_segment(Point p, Point a, Point b)
   {
     const Point  ab = b - a;
     const double l2 = dot(ab, ab);
-    const double t  = l2 > 0. ? std::clamp(dot(p - a, ab) / l2, 0., 1.) : 0.;
-    return norm(p - (a + t * ab));
+    return a + (l2 > 0. ? std::clamp(dot(p - a, ab) / l2, 0., 1.) : 0.) * ab;
   }
+
+  double distance_to_segment(Point p, Point a, Point b) { return norm(p - nearest_on_segment(p, a, b)); }
 
   namespace
   {

@@ -46,6 +46,9 @@ namespace pumpd::geometry
     bool   contains(const Box &other, double tolerance = 0.) const;
   };
 
+  /// The point of the segment [a, b] nearest p (a for a segment of zero length).
+  Point nearest_on_segment(Point p, Point a, Point b);
+
   /// Distance from p to the segment [a, b].
   double distance_to_segment(Point p, Point a, Point b);
 

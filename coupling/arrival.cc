@@ -92,9 +92,7 @@ namespace pumpd::coupling
         {
           if (c == own)
             break;
-          const geometry::Point a = cracks[c][j], w = cracks[c][j + 1] - a;
-          const double          t = std::clamp(geometry::dot(tip - a, w) / geometry::dot(w, w), 0., 1.);
-          const geometry::Point q = a + t * w;
+          const geometry::Point q = geometry::nearest_on_segment(tip, cracks[c][j], cracks[c][j + 1]);
           if (const double r = geometry::norm(q - tip); r < least && geometry::dot(q - tip, d) > 0.)
             {
               least   = r;

@@ -60,7 +60,7 @@ namespace pumpd::coupling
           {
             const Point  a = cracks[c][j], w = cracks[c][j + 1] - a;
             const double l = geometry::norm(w);
-            consider(a + std::clamp(geometry::dot(end - a, w) / (l * l), 0., 1.) * w, c);
+            consider(geometry::nearest_on_segment(end, a, cracks[c][j + 1]), c);
             for (double u = 0.; u <= l; u += 0.5 * spacing)
               consider(a + (u / l) * w, c);
           }

@@ -176,16 +176,6 @@ namespace pumpd::coupling
       }
     };
 
-    /// The material node nearest x.
-    std::size_t nearest_node(const local::PdModel &model, Point x)
-    {
-      std::size_t best = model.nodes().front();
-      for (std::size_t i : model.nodes())
-        if (geometry::norm(model.lattice().position(i) - x) < geometry::norm(model.lattice().position(best) - x))
-          best = i;
-      return best;
-    }
-
     /// Where a crack forms in a body without one: its mouth on the outline or a hole's rim, the
     /// material node next to it the ridge is traced from, and the direction it leaves the mouth in.
     struct Seed
@@ -325,7 +315,7 @@ namespace pumpd::coupling
         displacement = lambda != 0. ? 2. * model.elastic_energy(st) / lambda : 0.;
       else if (r.displacement_place.kind == conditions::Place::Kind::point)
         {
-          const std::size_t i = nearest_node(model, r.displacement_place.points.front());
+          const std::size_t i = model.nearest_node(r.displacement_place.points.front());
           displacement        = r.displacement_sign * pick(Point{st.ux[i], st.uy[i]}, r.displacement_component);
         }
       else
@@ -371,8 +361,8 @@ namespace pumpd::coupling
         const Point  mouth_dir = (1. / geometry::norm(initial[1] - initial[0])) * (initial[1] - initial[0]);
         const double gauge     = p.gauge_distance > 0. ? p.gauge_distance : pd.horizon;
         normal                 = {mouth_dir.y, -mouth_dir.x};
-        gauge_minus            = nearest_node(model, initial[0] - gauge * normal);
-        gauge_plus             = nearest_node(model, initial[0] + gauge * normal);
+        gauge_minus            = model.nearest_node(initial[0] - gauge * normal);
+        gauge_plus             = model.nearest_node(initial[0] + gauge * normal);
       }
     const auto mouth_opening = [&](const local::State &st) {
       return (st.ux[gauge_plus] - st.ux[gauge_minus]) * normal.x + (st.uy[gauge_plus] - st.uy[gauge_minus]) * normal.y;

@@ -34,9 +34,7 @@ namespace pumpd::coupling
         return piece.centre + (piece.radius / geometry::norm(p - piece.centre)) * (p - piece.centre);
       if (piece.arc)
         return geometry::norm(p - piece.a) < geometry::norm(p - piece.b) ? piece.a : piece.b;
-      const Point  e  = piece.b - piece.a;
-      const double ee = geometry::dot(e, e);
-      return piece.a + (ee > 0. ? std::clamp(geometry::dot(p - piece.a, e) / ee, 0., 1.) : 0.) * e;
+      return geometry::nearest_on_segment(p, piece.a, piece.b);
     }
 
     /// The largest bond stretch over its critical stretch, Z, of a state and the node it is at.
@@ -94,6 +92,23 @@ namespace pumpd::coupling
     {
       const Point centre{0.5 * (box.x_min + box.x_max), 0.5 * (box.y_min + box.y_max)};
       return body.clearance(centre) > 0.5 * std::hypot(box.x_max - box.x_min, box.y_max - box.y_min);
+    }
+
+    /// The tips a nucleation box's ridge is traced from (header comment, 4): the material node
+    /// next to the mouth, along t; or the two ends of the interior flaw, along t and -t.
+    std::vector<TipState> nucleation_tips(const local::PdModel &model, const std::optional<Point> &mouth,
+                                          const geometry::Polyline &flaw, Point t, double lambda_i)
+    {
+      const auto tip = [&](Point at, Point direction) {
+        TipState s;
+        s.position             = at;
+        s.direction            = direction;
+        s.critical_load_factor = lambda_i;
+        return s;
+      };
+      if (mouth)
+        return {tip(model.lattice().position(model.nearest_node(*mouth + 0.5 * model.lattice().spacing() * t)), t)};
+      return {tip(flaw.back(), t), tip(flaw.front(), -1. * t)};
     }
 
     /// The side of a nucleation box (header comment, 3): room for the longest crack between the
@@ -202,28 +217,7 @@ namespace pumpd::coupling
     exchange.first_load_factor    = initiation.first_load_factor;
     exchange.start_below_accepted = false;
     ExchangeController controller(exchange);
-    // The tips the ridge is traced from (header comment, 4): the material node next to the mouth,
-    // or the two ends of the interior flaw.
-    std::vector<TipState> tips(mouth ? 1 : 2);
-    if (mouth)
-      {
-        const Point x    = *mouth + 0.5 * h * t;
-        std::size_t best = model.nodes().front();
-        for (std::size_t i : model.nodes())
-          if (geometry::norm(model.lattice().position(i) - x) < geometry::norm(model.lattice().position(best) - x))
-            best = i;
-        tips[0].position  = model.lattice().position(best);
-        tips[0].direction = t;
-      }
-    else
-      {
-        tips[0].position  = flaw.back();
-        tips[0].direction = t;
-        tips[1].position  = flaw.front();
-        tips[1].direction = -1. * t;
-      }
-    for (auto &tip : tips)
-      tip.critical_load_factor = site.load_factor;
+    const auto tips = nucleation_tips(model, mouth, flaw, t, site.load_factor);
     // Each tip of an interior crack gets half of the Maximum crack length (less the flaw).
     const double allowed =
       std::min(exchange.max_advance, mouth ? settings.growth.length_limit() : 0.5 * (settings.growth.length_limit() - h));

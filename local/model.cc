@@ -508,6 +508,15 @@ namespace pumpd::local
     return volume * f;
   }
 
+  std::size_t PdModel::nearest_node(geometry::Point x) const
+  {
+    std::size_t best = active_nodes.front();
+    for (std::size_t i : active_nodes)
+      if (geometry::norm(grid.position(i) - x) < geometry::norm(grid.position(best) - x))
+        best = i;
+    return best;
+  }
+
   double PdModel::stable_time_step() const
   {
     return std::sqrt(2. * mat.parameters().density / stiffness);

@@ -107,6 +107,8 @@ namespace pumpd::local
     const Stencil        &stencil() const { return st; }
     const Region         &region() const { return reg; }
     double                node_volume() const { return volume; }
+    /// The material node nearest x.
+    std::size_t nearest_node(geometry::Point x) const;
 
     /// Nodes that carry material, in storage order.
     const std::vector<std::size_t> &nodes() const { return active_nodes; }

@@ -20,8 +20,7 @@
 //   from the loaded diameter is printed (initiation.disc.angle_err_deg), not checked: a real disc
 //   splits along the diameter, but Lipton's bond law, where the tension is uniform over several
 //   horizons, localises first in bands inclined by about 25 degrees to it (docs/peridynamics.md,
-//   "Localisation under uniform tension"): at m = 8 the damage forms both bands of that X and the
-//   ridge is refused as branching; at m = 4 (the scene's) it forms one of them.
+//   "Localisation under uniform tension"), and the crack follows one of them.
 // - The load that forms it against the strength estimate lambda_i (Rankine with the PD strength in
 //   uniaxial stress, initiation.h). At the centre the stress is biaxial, sigma_yy = -3 sigma_xx
 //   (point loads), and bonds fail by stretch: the strain along x, (sigma_xx - nu' sigma_yy) / E',
