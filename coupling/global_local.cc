@@ -12,6 +12,7 @@
 #include "arrival.h"
 #include "boundary_transfer.h"
 #include "crack.h"
+#include "crack_network.h"
 #include "cycle_checkpoint.h"
 #include "error.h"
 #include "exchange.h"
@@ -291,6 +292,7 @@ namespace pumpd::coupling
                                    "the checkpoint holds " + std::to_string(state.cracks.size()) +
                                      " cracks, the scene " + std::to_string(cracks.size()));
           cracks = the_cracks(state.cracks, scene);
+          global::join_touching(cracks, crack_tolerance(scene));
           global.restore(state.refinements);
           for (std::size_t e = 0; e < tracks.size(); ++e)
             {
@@ -629,10 +631,10 @@ namespace pumpd::coupling
             }
         }
       global.scale_to(lambda);
-      // Cracks that meet end the run, as in LEFM growth: the joined crack's enrichment would need a
-      // junction function.
-      const bool met = std::any_of(parts.begin(), parts.end(), [](const TipExchange &p) { return p.joined; });
-      if (!met)
+      // The run goes on while a tip goes on and the body is whole (crack_network.h).
+      if (global::cuts_off_a_piece(cracks, scene.body, crack_tolerance(scene)))
+        stopped_tips.push_back(std::string(cracks.size() == 1 ? "the crack" : "the cracks") + " cut the body through");
+      else
         for (std::size_t c = 0; c < cracks.size(); ++c)
           for (const auto &tip : cracks[c].tips())
             if (!tracks[track_of(c, tip)].stopped)
@@ -663,7 +665,7 @@ namespace pumpd::coupling
           part.stop = arrival.reason;
           return;
         }
-      crack.join(tip_index(track), face->at);
+      crack.join(tip_index(track), face->at, cracks[face->crack]);
       part.joined = true;
       part.stop   = "crack " + std::to_string(track / 2 + 1) + " joined crack " + std::to_string(face->crack + 1) +
                   " at " + to_text(face->at);

@@ -24,7 +24,8 @@
 // The exchange's load is the lowest at which a tip grew; a tip that grew within one load
 // increment of its own ladder above it grows too (its states cannot tell the two loads apart),
 // the increment of any other is discarded and computed again at the next exchange. A tip whose
-// increment meets another crack's face, or would within a horizon, joins that crack there.
+// increment meets another crack's face, or would within a horizon, joins that crack there; the
+// other tips go on until the cracks cut a piece off the body (global/crack_network.h).
 #pragma once
 
 #include <cstddef>

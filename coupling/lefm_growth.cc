@@ -13,6 +13,7 @@
 
 #include "arrival.h"
 #include "crack.h"
+#include "crack_network.h"
 #include "error.h"
 #include "path_metrics.h"
 #include "recorder.h"
@@ -59,6 +60,7 @@ namespace pumpd::coupling
       bool        grow  = true; ///< false: no new segment
       bool        stops = false;
       bool        joins = false; ///< ends on another crack's face
+      std::size_t other = 0;     ///< the crack it joins
       std::string reason;
     };
 
@@ -97,6 +99,7 @@ namespace pumpd::coupling
         {
           g.to     = tip.position + t_face * e;
           g.joins  = true;
+          g.other  = other;
           g.stops  = true;
           g.reason = "joined crack " + std::to_string(other + 1);
         }
@@ -146,12 +149,13 @@ namespace pumpd::coupling
   LefmGrowthResult run_lefm_growth(const Scene &scene, const LefmGrowthSettings &s, std::ostream &out)
   {
     const auto                 t0  = std::chrono::steady_clock::now();
-    const auto                &box = scene.body.bounding_box();
+    const auto                &box       = scene.body.bounding_box();
+    const double               tolerance = 1e-8 * std::max(box.width(), box.height());
     std::vector<global::Crack> cracks;
     if (scene.cracks.empty())
       scene.crack(); // names "Initial cracks"
     for (const auto &line : scene.cracks)
-      cracks.emplace_back(line, scene.body, 1e-8 * std::max(box.width(), box.height()));
+      cracks.emplace_back(line, scene.body, tolerance);
     check_clearance(cracks, s.global.tip_radius);
     GlobalProblem global(scene, s.global);
     Recorder      recorder(scene);
@@ -267,6 +271,7 @@ namespace pumpd::coupling
                 {
                   g->to     = tip.position + t * (g->to - tip.position);
                   g->joins  = true;
+                  g->other  = other;
                   g->stops  = true;
                   g->reason = "joined crack " + std::to_string(other + 1);
                 }
@@ -274,7 +279,7 @@ namespace pumpd::coupling
               try
                 {
                   if (g->joins)
-                    crack.join(g->tip, g->to);
+                    crack.join(g->tip, g->to, cracks[g->other]);
                   else
                     crack.grow(g->tip, g->to);
                   joined |= g->joins;
@@ -298,21 +303,18 @@ namespace pumpd::coupling
           paths.push_back(c.vertices());
         recorder.crack_paths(paths);
 
-        // A crack that lost its last tip at the boundary (not by joining) cuts the body through.
-        bool growing = false, cut_through = false;
+        // The run goes on while a tip grows and the body is whole (crack_network.h).
+        bool growing = false;
         for (std::size_t c = 0; c < cracks.size(); ++c)
+          for (const auto &t : cracks[c].tips())
+            growing |= !is_stopped(c, t);
+        const bool cut_through = global::cuts_off_a_piece(cracks, scene.body, tolerance);
+        if (last || !growing || cut_through)
           {
-            for (const auto &t : cracks[c].tips())
-              growing |= !is_stopped(c, t);
-            cut_through |= cracks[c].tips().empty() &&
-                           std::none_of(growth.begin(), growth.end(), [&](const Growth &g) { return g.crack == c && g.joins; });
-          }
-        if (last || !growing || joined || cut_through)
-          {
-            const std::string end = joined ? "the cracks joined (the run ends: junctions are not enriched)"
+            const std::string end = cut_through ? std::string(cracks.size() == 1 ? "the crack" : "the cracks") +
+                                                    " cut the body through"
                                     : step == s.lefm.max_steps ? "maximum steps"
                                     : at_limit                 ? "maximum crack length"
-                                    : cut_through              ? "the crack cut the body through"
                                                                : "no tip grows";
             result.stop_reason += (result.stop_reason.empty() ? "" : "; ") + end;
             break;

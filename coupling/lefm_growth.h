@@ -20,8 +20,9 @@
 // others wait (quasi-static: they are not yet critical at that load). A tip whose increment would
 // reach another crack's face (within look_ahead da, or crossing a segment grown earlier in the step)
 // joins it: the new segment is clipped to the face and ends there, the end becomes a junction and
-// the tip disappears (global::Crack::join). The run then ends: the global problem does not enrich
-// junctions (the Heaviside function of the joined crack would extend across the other).
+// the tip disappears (global::Crack::join; the junction is enriched by the junction function). The
+// other tips go on; the run ends when no tip grows or the cracks cut a piece off the body
+// (global/crack_network.h).
 #pragma once
 
 #include <cstddef>

@@ -140,7 +140,22 @@ namespace pumpd::global
 
   double Crack::signed_distance(Point x) const { return signed_distance_to(points, x); }
 
-  int Crack::side(Point x) const { return signed_distance(x) >= 0. ? 1 : -1; }
+  int Crack::side(Point x) const
+  {
+    if (const Junction *j = junction_beyond(x))
+      return j->beyond;
+    return signed_distance(x) >= 0. ? 1 : -1;
+  }
+
+  bool Crack::beyond_junction(Point x) const { return junction_beyond(x) != nullptr; }
+
+  const Crack::Junction *Crack::junction_beyond(Point x) const
+  {
+    for (const auto &j : junction)
+      if (j && dot(x - j->at, j->n) < 0. && dot(x - j->at, j->d) > 0.)
+        return &*j;
+    return nullptr;
+  }
 
   std::array<double, 2> Crack::polar(Point x, std::size_t t) const
   {
@@ -240,11 +255,34 @@ namespace pumpd::global
     return d;
   }
 
-  void Crack::join(std::size_t t, Point at)
+  void Crack::join(std::size_t t, Point at, const Crack &other)
   {
-    const bool front = tip_list[check_tip(t, tip_list.size())].vertex == 0;
-    grow(t, at);
-    joined[front ? 0 : 1] = true;
+    const Tip  tip   = tip_list[check_tip(t, tip_list.size())];
+    const bool front = tip.vertex == 0;
+    const auto &o    = other.points;
+    std::size_t face = 0;
+    for (std::size_t s = 1; s + 1 < o.size(); ++s)
+      if (geometry::distance_to_segment(at, o[s], o[s + 1]) < geometry::distance_to_segment(at, o[face], o[face + 1]))
+        face = s;
+    if (geometry::distance_to_segment(at, o[face], o[face + 1]) > tol)
+      throw InvalidParameter("Crack junction", to_text(at), "must lie on the face of the crack it joins");
+    if (norm(at - tip.position) > tol)
+      grow(t, at);
+
+    // H beyond the junction takes the value H has on the far side next to the face where the face
+    // runs back against the joined end's direction d: there the level set's sign comes from the
+    // end segment's line and is the same up to the face, so H stays continuous across the part
+    // of the far side that the extension of the joined end does not reach.
+    const std::size_t last    = points.size() - 1;
+    const Point       segment = front ? points[1] - points[0] : points[last] - points[last - 1];
+    Junction          j;
+    j.at               = at;
+    j.d                = front ? unit(points[0] - points[1]) : unit(segment);
+    const Point along  = unit(o[face + 1] - o[face]);
+    j.n                = dot(left_normal(along), j.d) > 0. ? -1. * left_normal(along) : left_normal(along);
+    const Point back   = dot(along, j.d) <= 0. ? along : -1. * along;
+    j.beyond           = cross(segment, back) >= 0. ? 1 : -1;
+    junction[front ? 0 : 1] = j;
     update_tips();
   }
 
@@ -252,9 +290,9 @@ namespace pumpd::global
   {
     tip_list.clear();
     const std::size_t last = points.size() - 1;
-    if (!joined[0] && body.clearance(points.front()) > tol)
+    if (!junction[0] && body.clearance(points.front()) > tol)
       tip_list.push_back({points.front(), unit(points.front() - points[1]), 0});
-    if (!joined[1] && body.clearance(points.back()) > tol)
+    if (!junction[1] && body.clearance(points.back()) > tol)
       tip_list.push_back({points.back(), unit(points.back() - points[last - 1]), last});
   }
 } // namespace pumpd::global

@@ -12,6 +12,10 @@
 //   tip frame: position, unit direction of propagation (along the end segment, outward).
 //   (r, theta) about a tip: r = |x - tip|, theta = side(x) acos((x - tip).d / r) in [-pi, pi],
 //           so theta = +-pi on the crack faces even when the crack behind the tip is kinked.
+//   H(x): the Heaviside function, sign(phi). Beyond a junction (on the other crack's far side of
+//           its face line at the junction, ahead of the junction along the joined end) it is the
+//           constant H has next to that face on the far side, so that the joined crack does not run
+//           on through the crack it joined (Daux et al. 2000, the junction function).
 // Branch functions (Fleming et al. 1997; Moes et al. 1999):
 //   F1 = sqrt(r) sin(t/2), F2 = sqrt(r) cos(t/2), F3 = sqrt(r) sin(t/2) sin t, F4 = sqrt(r) cos(t/2) sin t
 // with grad theta = side(x) sign(y') grad(polar angle), y' the coordinate normal to the tip direction.
@@ -19,6 +23,7 @@
 
 #include <array>
 #include <cstddef>
+#include <optional>
 #include <vector>
 
 #include "body.h"
@@ -55,8 +60,11 @@ namespace pumpd::global
     double                    length() const;
 
     double signed_distance(Point x) const;
-    /// +1 where signed_distance >= 0, -1 elsewhere: the Heaviside function.
+    /// +1 where signed_distance >= 0, -1 elsewhere, and constant beyond a junction: the Heaviside
+    /// (junction) function.
     int side(Point x) const;
+    /// True where side() is a junction's constant (see the level sets above).
+    bool beyond_junction(Point x) const;
     /// (r, theta) of x about tip t.
     std::array<double, 2> polar(Point x, std::size_t t) const;
     BranchValues          branch_functions(Point x, std::size_t t) const;
@@ -68,17 +76,31 @@ namespace pumpd::global
     /// Extends tip t to new_position (a new segment). Throws InvalidParameter if the new segment
     /// crosses the crack or leaves the body; the tip frame follows the new segment.
     void grow(std::size_t t, Point new_position);
-    /// Extends tip t to `at` (as grow) on another crack's face and ends it there: that end becomes
-    /// a junction and the tip disappears.
-    void join(std::size_t t, Point at);
+    /// Extends tip t to `at` (as grow; not if the tip lies there already) on the face of `other`
+    /// and ends it there: that end becomes a junction and the tip disappears. Throws
+    /// InvalidParameter if `at` lies farther than the tolerance from `other`.
+    void join(std::size_t t, Point at, const Crack &other);
+    /// Whether the first / the last vertex is a junction.
+    std::array<bool, 2> junctions() const { return {{junction[0].has_value(), junction[1].has_value()}}; }
 
   private:
-    void update_tips();
+    /// Where an end joined another crack: H is `beyond` where (x - at).n < 0 and (x - at).d > 0.
+    struct Junction
+    {
+      Point at;
+      Point n; ///< the other crack's face normal at `at`, towards this crack
+      Point d; ///< the direction of the joined end, out of the crack (into the other crack)
+      int   beyond = 1;
+    };
 
-    geometry::Polyline  points;
-    geometry::Body      body;
-    double              tol;
-    std::vector<Tip>    tip_list;
-    std::array<bool, 2> joined{}; ///< the first / the last vertex is a junction
+    void update_tips();
+    /// The junction whose constant H takes at x, if any.
+    const Junction *junction_beyond(Point x) const;
+
+    geometry::Polyline                     points;
+    geometry::Body                         body;
+    double                                 tol;
+    std::vector<Tip>                       tip_list;
+    std::array<std::optional<Junction>, 2> junction{}; ///< at the first / the last vertex
   };
 } // namespace pumpd::global

@@ -458,7 +458,7 @@ namespace pumpd::global
     for (unsigned int c = 0; c < cracks.size(); ++c)
       {
         const double phi = cracks[c].signed_distance(x);
-        side[c]          = std::abs(phi) < tolerance ? on_crack : phi >= 0. ? 1 : -1;
+        side[c] = std::abs(phi) < tolerance && !cracks[c].beyond_junction(x) ? on_crack : cracks[c].side(x);
       }
   }
 } // namespace pumpd::global

@@ -8,7 +8,8 @@
 //   K_II > 0 and kinks back towards the plane normal to the load (theta_c < 0);
 // - coarse Ingraffea Case I growth: the path stays in the body, grows by the increments, kinks
 //   towards the load point (x increasing) first, and is clipped to the outline where it leaves;
-// - a crack aimed straight at a hole stops `hole_margin` before the hole's circle.
+// - a crack aimed straight at a hole stops `hole_margin` before the hole's circle;
+// - a tip that joins another crack ends there (a junction) and the other crack's tips go on.
 #include <gtest/gtest.h>
 
 #include <deal.II/grid/grid_generator.h>
@@ -226,4 +227,35 @@ TEST(LefmGrowth, CrackAimedAtAHoleStopsBeforeIt)
   EXPECT_NEAR(geometry::norm(r.path.back() - centre), radius + p.growth.hole_margin, 2e-5);
   for (std::size_t k = 1; k < r.path.size(); ++k)
     EXPECT_GT(geometry::distance_to_segment(centre, r.path[k - 1], r.path[k]), radius + 0.5 * p.growth.hole_margin);
+}
+
+// The coarse Case I beam's notch below a horizontal interior crack 21 mm above its tip (beyond the
+// tip enrichment radius), along the bending stress and so hardly opened by it. With da = 16 mm the
+// face lies within the look-ahead of the notch's first increment: the notch joins it; the body
+// stays whole, and the notch, opening, now wedges the interior crack open, so its tips go on
+// growing from the junction-enriched solution until the step limit.
+TEST(LefmGrowth, TheOtherTipsGoOnAfterAJoin)
+{
+  auto p                 = coarse(beam);
+  p.scene.initial_cracks  = "0.1016,0; 0.1016,0.0254 | 0.07,0.0464; 0.13,0.0464";
+  p.lefm.growth_increment = 0.016;
+  p.lefm.max_steps        = 8;
+  const auto r           = run(p);
+  ASSERT_EQ(r.paths.size(), 2u);
+  EXPECT_TRUE(r.joined);
+  EXPECT_NE(r.stop_reason.find("joined crack 2"), std::string::npos) << r.stop_reason;
+  EXPECT_EQ(r.stop_reason.find("cut the body through"), std::string::npos) << r.stop_reason;
+  const geometry::Polyline &notch = r.paths[0], &interior = r.paths[1];
+  double gap = 1.;
+  for (std::size_t k = 1; k < interior.size(); ++k)
+    gap = std::min(gap, geometry::distance_to_segment(notch.back(), interior[k - 1], interior[k]));
+  EXPECT_LT(gap, 1e-9) << "the notch ends on the interior crack's face";
+  std::size_t joined_at = 0, interior_growth_after = 0;
+  for (const auto &st : r.steps)
+    if (st.crack == 0 && st.increment > 0.)
+      joined_at = st.step;
+  for (const auto &st : r.steps)
+    interior_growth_after += st.crack == 1 && st.step > joined_at && st.increment > 0.;
+  EXPECT_GE(interior_growth_after, 2u) << "the interior crack grows after the join";
+  EXPECT_GT(geometry::length(interior), 0.06 + 2 * 0.004);
 }

@@ -399,22 +399,55 @@ TEST(Crack, InvalidInputIsRefused)
 }
 
 // join: the tip grows onto another crack's face and that end becomes a junction (no tip); the
-// other tip keeps growing; a crack without a tip is allowed once growth made it so.
+// other tip keeps growing; a crack without a tip is allowed once growth made it so; a point off
+// the other crack's face is refused.
 TEST(Crack, JoinTurnsTheTipIntoAJunction)
 {
-  Crack e = edge_crack();
-  e.join(0, {0.7, 0.5});
+  const Crack face({{0.7, 0.2}, {0.7, 0.8}}, plate, tol);
+  Crack       e = edge_crack();
+  e.join(0, {0.7, 0.5}, face);
   EXPECT_TRUE(e.tips().empty());
+  EXPECT_TRUE(e.junctions()[1]);
+  EXPECT_FALSE(e.junctions()[0]);
   expect_point(e.vertices().back(), {0.7, 0.5}, 0.);
 
-  Crack i = interior_crack();
-  i.join(1, {1.6, 0.55});
+  const Crack other({{1.6, 0.2}, {1.6, 0.9}}, plate, tol);
+  Crack       i = interior_crack();
+  i.join(1, {1.6, 0.55}, other);
   ASSERT_EQ(i.tips().size(), 1u);
   expect_point(i.tips()[0].position, {0.5, 0.5}, 0.);
   i.grow(0, {0.4, 0.5});
   ASSERT_EQ(i.tips().size(), 1u);
   expect_point(i.tips()[0].position, {0.4, 0.5}, 0.);
   expect_point(i.vertices().back(), {1.6, 0.55}, 0.);
+
+  expect_invalid([&] { edge_crack().join(0, {0.7, 0.1}, face); }, "must lie on the face of the crack it joins");
+}
+
+// The junction function (Daux et al. 2000): across the crack it joined, the joined crack's H is
+// one constant near the junction (its level set's extension there would open a crack that is not
+// there), and on its own side H still changes sign across it. An oblique junction: the edge crack
+// runs from (0, 0.2) up at 45 degrees into the face of a vertical crack at x = 0.5.
+TEST(Crack, JunctionFunctionIsConstantAcrossTheCrackItJoined)
+{
+  const Crack face({{0.5, 0.1}, {0.5, 0.9}}, plate, tol);
+  for (const bool front : {false, true})
+    {
+      Crack s = front ? Crack({{0.4, 0.6}, {0., 0.2}}, plate, tol) : Crack({{0., 0.2}, {0.4, 0.6}}, plate, tol);
+      s.join(0, {0.5, 0.7}, face);
+      ASSERT_TRUE(s.tips().empty());
+      const Point j{0.5, 0.7};
+      std::vector<int> far_side;
+      for (const Point o : {Point{0.01, 0.}, Point{0.01, 0.05}, Point{0.01, -0.05}, Point{0.05, 0.2}, Point{0.05, -0.2},
+                            Point{0.1, 0.}, Point{1e-6, 1e-3}, Point{1e-6, -1e-3}})
+        far_side.push_back(s.side(j + o));
+      for (const int h : far_side)
+        EXPECT_EQ(h, far_side.front()) << (front ? "front" : "back") << " junction";
+      EXPECT_NE(s.side(j + Point{-0.1, -0.05}), s.side(j + Point{-0.1, -0.15}));
+      // The same constant where the end's extension does not reach: next to the face on its far
+      // side, behind the junction along the face.
+      EXPECT_EQ(s.side(j + Point{1e-3, -0.3}), far_side.front());
+    }
 }
 
 // distance: to the segments, not to the level set's extension beyond the tips.

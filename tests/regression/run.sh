@@ -3,8 +3,9 @@
 #        [<file> "<numdiff options>"]...
 # Runs pumpd on the scene (from the source directory: relative paths in a scene start there) with
 # its output directory moved to <work dir>/out, then compares: each <file> of the reference with
-# numdiff and its options; the crack path with path_change, printed as
-# `pumpd-metric <metric> <mean distance in mm>` and failing above <limit mm> (empty: not compared).
+# numdiff and its options, fields split at commas (the files are CSV); the crack path with
+# path_change, printed as `pumpd-metric <metric> <mean distance in mm>` and failing above
+# <limit mm> (empty: not compared).
 set -u
 pumpd=$1 path_change=$2 source=$3 prm=$4 work=$5 reference=$6 metric=$7 limit=$8
 shift 8
@@ -19,12 +20,12 @@ while [ $# -ge 2 ]; do
   file=$1 options=$2
   shift 2
   # shellcheck disable=SC2086
-  if numdiff -q $options "$reference/$file" "$work/out/$file" > /dev/null; then
+  if numdiff -q -s ',\n' $options "$reference/$file" "$work/out/$file" > /dev/null; then
     echo "$file: as the reference (numdiff $options)"
   else
     echo "FAIL: $file differs from the reference beyond numdiff $options:"
     # shellcheck disable=SC2086
-    numdiff $options "$reference/$file" "$work/out/$file" | head -n 20
+    numdiff -s ',\n' $options "$reference/$file" "$work/out/$file" | head -n 20
     failed=1
   fi
 done

@@ -1,0 +1,26 @@
+// The cracks of a body as a network: which ends are junctions on which crack, and whether the
+// cracks cut a piece off the body. Plain geometry, no deal.II.
+//
+// The network is a graph whose nodes are the boundary's components (the outline, each hole's
+// rim) and the cracks, with an edge for every mouth (crack - the component it opens on) and every
+// junction (crack - the crack it joined). A cycle of this graph is a closed loop of crack faces and
+// boundary arcs: it cuts a piece off the body. A crack from the outline to a hole closes none (it
+// joins two components); a second one between them, an edge crack with both ends on the outline
+// or one joined to a crack that opens on the outline does.
+#pragma once
+
+#include <vector>
+
+#include "body.h"
+#include "crack.h"
+
+namespace pumpd::global
+{
+  /// True if the cracks, through their mouths and junctions, cut a piece off the body; ends
+  /// within `tolerance` of the outline or a hole's rim are mouths.
+  bool cuts_off_a_piece(const std::vector<Crack> &cracks, const geometry::Body &body, double tolerance);
+
+  /// Joins every tip that lies within `tolerance` of another crack's face to that crack (Crack::join):
+  /// the junctions of cracks rebuilt from their polylines.
+  void join_touching(std::vector<Crack> &cracks, double tolerance);
+} // namespace pumpd::global
