@@ -75,7 +75,9 @@ namespace pumpd::coupling
     for (std::size_t k = 0; k + 1 < path.size(); ++k)
       {
         const geometry::Point e = path[k + 1] - path[k];
-        if (const auto [t, c] = ray_to_cracks(path[k], e, 1., cracks, own); t <= 1.)
+        // A path that ends on a face (a trace that reached it) meets it: its end may lie a
+        // rounding error short of the face.
+        if (const auto [t, c] = ray_to_cracks(path[k], e, 1. + 1e-9, cracks, own); t <= 1. + 1e-9)
           return CrackMeeting{c, k, path[k] + t * e};
       }
     return std::nullopt;

@@ -3,8 +3,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <sstream>
 
+#include "arrival.h"
 #include "error.h"
 
 namespace pumpd::coupling
@@ -185,6 +187,26 @@ namespace pumpd::coupling
         kept.push_back(line[last]);
     }
 
+    /// Where the trace from p along t ends on one of the faces: the first face point along t
+    /// within `reach`, or, if `nearest` is given, else the faces' point nearest to q when it lies
+    /// within `nearest`.
+    std::optional<Point> face_reached(Point p, Point t, double reach, Point q, double nearest,
+                                      const std::vector<geometry::Polyline> &faces)
+    {
+      if (const double hit = ray_to_cracks(p, t, reach, faces, faces.size()).first; std::isfinite(hit))
+        return p + hit * t;
+      std::optional<Point> best;
+      double               least = nearest;
+      for (const auto &face : faces)
+        for (std::size_t k = 0; k + 1 < face.size(); ++k)
+          if (const Point x = geometry::nearest_on_segment(q, face[k], face[k + 1]); geometry::norm(x - q) < least)
+            {
+              least = geometry::norm(x - q);
+              best  = x;
+            }
+      return best;
+    }
+
     void check_input(const DamageField &f, Point tip, Point direction, const ExtractionSettings &s)
     {
       require_positive("Damage field spacing", f.spacing);
@@ -241,6 +263,17 @@ namespace pumpd::coupling
       if (!std::isfinite(damage(q)))
         break;
       const std::vector<Run> runs = transverse_runs(damage, q, t, w, h, s.threshold);
+      // Damage across the predictor (the ridge, or the band of a face it is reaching) and a face
+      // ahead: the trace ends on it.
+      const bool split = runs.size() > 1;
+      if (const auto end = runs.empty() ? std::nullopt
+                                        : face_reached(p, t, step + (split ? 2. : 1.) * s.horizon, q,
+                                                       split ? 2. * s.horizon : 0., s.faces))
+      {
+        traced.push_back(*end);
+        reason = reaches_face;
+        break;
+      }
       if (runs.size() > 1)
       {
         std::ostringstream m;

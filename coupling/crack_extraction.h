@@ -16,6 +16,10 @@
 //    spacing behind the tip). The march also stops where the material ends (a hole, the field's edge);
 // 4. Douglas-Peucker simplification (tolerance h/2). An increment shorter than one spacing is
 //    below the lattice resolution: no growth.
+// Other cracks' faces (`faces`): their damage bands would read as branches once the window reaches
+// them, so the trace ends on a face that lies within a horizon ahead of the predictor (along t),
+// and a split within two horizons of a face ends the trace on it too (on the face along t within
+// two horizons of the predictor, else at the face's point nearest to it).
 #pragma once
 
 #include <cstddef>
@@ -45,11 +49,14 @@ namespace pumpd::coupling
     double horizon           = 0.;  ///< delta [m], sets default widths
     double max_turn          = 0.785398163397448; ///< largest turn of the tip direction per step [rad] (45 degrees)
     double simplification    = 0.;  ///< Douglas-Peucker tolerance [m]; 0: half a spacing
+    std::vector<geometry::Polyline> faces; ///< other cracks, which the trace ends on
   };
 
   /// The stop reason (its start) of a trace that ends in the material: no run above the threshold
   /// across the predictor, within the turn limit.
   inline constexpr char ridge_ends[] = "the damage ridge ends";
+  /// The stop reason of a trace that ends on one of the `faces`.
+  inline constexpr char reaches_face[] = "the damage ridge reaches another crack's face";
 
   struct CrackIncrement
   {

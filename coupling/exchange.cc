@@ -85,7 +85,8 @@ namespace pumpd::coupling
 
   ExchangeOutcome run_exchange(const local::PdModel &model, const BoundaryTransfer &transfer,
                                ExchangeController &controller, const std::vector<TipState> &tips,
-                               const std::vector<double> &allowed,
+                               const std::vector<double>                      &allowed,
+                               const std::vector<std::vector<geometry::Polyline>> &faces,
                                const std::function<bool(const geometry::Polyline &)> &arrives,
                                const PeridynamicsSettings &pd, std::ostream &out, const std::string &unit)
   {
@@ -123,8 +124,11 @@ namespace pumpd::coupling
         r.increments.clear();
         try
           {
-            for (const auto &tip : tips)
-              r.increments.push_back(extract_crack(damage, tip.position, tip.direction, extraction));
+            for (std::size_t k = 0; k < tips.size(); ++k)
+              {
+                extraction.faces = faces.empty() ? std::vector<geometry::Polyline>{} : faces[k];
+                r.increments.push_back(extract_crack(damage, tips[k].position, tips[k].direction, extraction));
+              }
           }
         catch (const CrackBranching &e)
           {
@@ -138,7 +142,8 @@ namespace pumpd::coupling
           if (r.increments[k].length() / allowed[k] > r.increments[farthest].length() / allowed[farthest])
             farthest = k;
         const auto &increment = r.increments[farthest];
-        const bool  reaches   = increment.path.size() > 1 && arrives(increment.path);
+        const bool  reaches   = increment.path.size() > 1 &&
+                             (arrives(increment.path) || increment.stop_reason.rfind(reaches_face, 0) == 0);
         r.decision            = controller.judge(increment.length(), allowed[farthest], reaches);
         out << "    PD at " << std::setprecision(4) << lambda << " " << unit << ": " << relaxed.iterations
             << " DR iterations, advance " << increment.length() << " m"

@@ -33,13 +33,16 @@ namespace pumpd::coupling
   };
 
   /// Runs the states of one exchange for the tips in the box, the load factor relative to the
-  /// first tip's critical load factor lambda_c; tip k advances at most allowed[k]; `arrives(path)`
-  /// says whether an increment reaches a hole or the outline (accepted whatever its length).
+  /// first tip's critical load factor lambda_c; tip k advances at most allowed[k] and its trace
+  /// ends on the other cracks faces[k] (crack_extraction.h; none if faces is empty); `arrives(path)`
+  /// says whether an increment reaches a hole or the outline (accepted whatever its length, as
+  /// one that reaches another crack's face).
   /// Progress (one line per state, the load factor in units of `unit`: the first tip's lambda_c,
   /// or the lambda_i of a nucleation) to `out`.
   ExchangeOutcome run_exchange(const local::PdModel &model, const BoundaryTransfer &transfer,
                                ExchangeController &controller, const std::vector<TipState> &tips,
-                               const std::vector<double> &allowed,
+                               const std::vector<double>                      &allowed,
+                               const std::vector<std::vector<geometry::Polyline>> &faces,
                                const std::function<bool(const geometry::Polyline &)> &arrives,
                                const PeridynamicsSettings &pd, std::ostream &out,
                                const std::string &unit = "lambda_c");

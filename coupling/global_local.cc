@@ -531,17 +531,22 @@ namespace pumpd::coupling
       TipExchange          &lead  = parts[box.front()];
       auto                 &track = tracks[owner(box, parts)];
       const double          scale = track.length_scale();
-      std::vector<TipState> tips;
-      std::vector<double>   allowed;
+      std::vector<TipState>                        tips;
+      std::vector<double>                          allowed;
+      std::vector<std::vector<geometry::Polyline>> faces;
       for (std::size_t m : box)
         {
           tips.push_back(parts[m].tip);
+          faces.emplace_back();
+          for (std::size_t c = 0; c < cracks.size(); ++c)
+            if (c != parts[m].track / 2)
+              faces.back().push_back(cracks[c].vertices());
           allowed.push_back(std::min(scale * track.controller.allowed_advance(
                                                scene.body.clearance(parts[m].tip.position) / scale),
                                      max_length - lead.record.crack_length));
         }
       auto outcome = run_exchange(
-        *lead.model, transfer, track.controller, tips, allowed,
+        *lead.model, transfer, track.controller, tips, allowed, faces,
         [&](const geometry::Polyline &path) { return !arrival_of(path, track.pd.horizon).reason.empty(); }, track.pd,
         out);
       result.pd_node_steps += outcome.node_steps;

@@ -235,7 +235,7 @@ namespace pumpd::coupling
         << crack.box.x_max << "] x [" << crack.box.y_min << ", " << crack.box.y_max << "], delta " << pd.horizon
         << " m, " << crack.pd_nodes << " PD nodes; states from " << exchange.first_load_factor
         << " lambda_i, lambda_i = " << site.load_factor << std::endl;
-    const auto outcome = run_exchange(model, transfer, controller, tips, std::vector<double>(tips.size(), allowed),
+    const auto outcome = run_exchange(model, transfer, controller, tips, std::vector<double>(tips.size(), allowed), {},
                                       arrives, pd, out, "lambda_i");
     crack.states     = outcome.states;
     crack.iterations = outcome.iterations;

@@ -315,6 +315,46 @@ TEST(CrackExtraction, RefusesABranchingRidge)
   }
 }
 
+// A ridge running into another crack's face (a T, the other crack at 75 degrees to it, three
+// horizons ahead of the tip): given that face, the trace ends on it within a spacing of the true
+// meeting point (reason reaches_face); without it, the face's own damage band reads as a branch
+// across the window or carries the trace on, and the trace does not end there.
+TEST(CrackExtraction, EndsOnAnotherCracksFace)
+{
+  for (int m : {4, 8})
+  {
+    const Point    d = along(17.), tip{0.0203, 0.0241}, meeting = tip + 3. * m * h * d;
+    const Point    e = rotated(d, 75.);
+    const Polyline face{meeting - 0.015 * e, meeting + 0.015 * e};
+    Scene          s = make_scene("T", m, tip, d, {tip, meeting});
+    s.cracks.push_back(face);
+    s.nx = s.ny = 96;
+    const DamageField field = synthetic_damage(s);
+
+    ExtractionSettings with_face = settings_for(s);
+    with_face.faces              = {face};
+    const auto increment         = extract_crack(field, s.tip, s.direction, with_face);
+    std::cout << "m " << m << ": " << increment.stop_reason << ", end " << geometry::to_text(increment.path.back())
+              << " (meeting " << geometry::to_text(meeting) << ")\n";
+    EXPECT_EQ(increment.stop_reason.rfind(reaches_face, 0), 0u) << increment.stop_reason;
+    EXPECT_LT(distance_to(increment.path.back(), face), 1e-12);
+    EXPECT_LT(geometry::norm(increment.path.back() - meeting), h);
+
+    bool ends_there = false;
+    try
+    {
+      const auto blind = extract_crack(field, s.tip, s.direction, settings_for(s));
+      ends_there       = geometry::norm(blind.path.back() - meeting) < h;
+      std::cout << "  without the face: " << blind.stop_reason << ", end " << geometry::to_text(blind.path.back()) << "\n";
+    }
+    catch (const CrackBranching &b)
+    {
+      std::cout << "  without the face: " << b.what() << "\n";
+    }
+    EXPECT_FALSE(ends_there) << "m " << m << ": the face changes nothing";
+  }
+}
+
 TEST(CrackExtraction, RefusesBadSettings)
 {
   const Scene        s     = straight(0., 4, 0.01);
