@@ -10,6 +10,7 @@
 #include <string>
 
 #include "global_local.h"
+#include "path_metrics.h"
 #include "scene_file.h"
 
 using namespace pumpd;
@@ -116,5 +117,56 @@ TEST(GlobalLocal, ResumedRunWithHalvedBoxesMatchesTheUninterruptedOne)
     {
       EXPECT_EQ(a.path[k].x, b.path[k].x) << k;
       EXPECT_EQ(a.path[k].y, b.path[k].y) << k;
+    }
+}
+
+// Cracks that meet, on the coarse Case I beam (m = 8): the notch below a horizontal interior crack
+// 21 mm above its tip grows up into that crack's face and joins it (its trace ends on the face);
+// the body stays whole, so the cycle goes on, and the interior crack's right tip, now wedged open
+// by the notch (K_II / K_I about -0.8: a kink of about 50 degrees), grows from the junction-enriched
+// solution in every exchange after the join. Resumed after the join (the checkpoint holds
+// polylines: the junction is found again), the run continues as the uninterrupted one, bit for bit.
+TEST(GlobalLocal, TheOtherCrackGrowsAfterAJoinAndAResumedRunFindsTheJunction)
+{
+  const auto t_scene = [](const std::string &output, unsigned int exchanges) {
+    auto p                    = test::scene_file("tests/regression/ingraffea-case1-coarse.prm", output);
+    p.scene.initial_cracks    = "0.1016,0; 0.1016,0.0254 | 0.07,0.0464; 0.13,0.0464";
+    p.scene.reference_path    = "";
+    p.pd.horizon_over_spacing = 8;
+    p.cycle.max_exchanges     = exchanges;
+    return p;
+  };
+  const auto a = run(t_scene("global_local_t_whole", 8));
+  ASSERT_EQ(a.paths.size(), 2u);
+  const auto &notch = a.paths[0], &interior = a.paths[1];
+  EXPECT_LT(distance_to_polyline(notch.back(), interior), 1e-9) << "the notch ends on the interior crack's face";
+  std::size_t joined_at = 0, after = 0;
+  bool        joined    = false;
+  for (const auto &e : a.exchanges)
+    if (e.crack == 0 && e.advance > 0.)
+      {
+        joined_at = e.exchange;
+        joined    = true;
+      }
+  for (const auto &e : a.exchanges)
+    after += e.crack == 1 && e.exchange > joined_at && e.advance > 0.;
+  ASSERT_TRUE(joined);
+  EXPECT_GE(after, 2u) << "the interior crack grows after the join";
+  EXPECT_GT(geometry::length(interior), 0.06 + 2. * 0.004);
+
+  auto part = t_scene("global_local_t_part", joined_at + 2);
+  run(part);
+  part.cycle.max_exchanges = 8;
+  part.cycle.resume        = true;
+  const auto b             = run(part);
+  ASSERT_EQ(b.paths.size(), 2u);
+  for (std::size_t c = 0; c < 2; ++c)
+    {
+      ASSERT_EQ(a.paths[c].size(), b.paths[c].size()) << c;
+      for (std::size_t k = 0; k < a.paths[c].size(); ++k)
+        {
+          EXPECT_EQ(a.paths[c][k].x, b.paths[c][k].x) << c << ", " << k;
+          EXPECT_EQ(a.paths[c][k].y, b.paths[c][k].y) << c << ", " << k;
+        }
     }
 }
