@@ -236,11 +236,11 @@ TEST(LefmGrowth, CrackAimedAtAHoleStopsBeforeIt)
 // growing from the junction-enriched solution until the step limit.
 TEST(LefmGrowth, TheOtherTipsGoOnAfterAJoin)
 {
-  auto p                 = coarse(beam);
+  auto p                  = coarse(beam);
   p.scene.initial_cracks  = "0.1016,0; 0.1016,0.0254 | 0.07,0.0464; 0.13,0.0464";
   p.lefm.growth_increment = 0.016;
   p.lefm.max_steps        = 8;
-  const auto r           = run(p);
+  const auto r            = run(p);
   ASSERT_EQ(r.paths.size(), 2u);
   EXPECT_TRUE(r.joined);
   EXPECT_NE(r.stop_reason.find("joined crack 2"), std::string::npos) << r.stop_reason;
