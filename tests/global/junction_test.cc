@@ -10,16 +10,20 @@
 // dragged by the rest. Below M, the displacement 2e-6 apart across x = 0.315 agrees within
 // 1e-4 delta (a gradient of order delta / 0.5 gives 4e-6 delta).
 // The mesh is the 20 x 20 square stretched by a smooth map, so that no crack runs along a mesh line.
+// Prints pumpd-metric global.junction_block_rigid_err (the largest |u - (0, delta)| / delta in P)
+// and global.junction_jump_below_over_delta.
 #include <gtest/gtest.h>
 
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "crack.h"
 #include "elasticity.h"
+#include "metric.h"
 
 using namespace pumpd;
 using namespace pumpd::global;
@@ -52,10 +56,12 @@ TEST(GlobalJunction, ACrackJoinedToAnotherCutsOffTheBlockBetweenThem)
   problem.assemble();
   problem.solve();
 
+  double rigid_err = 0., jump = 0.;
   for (const geometry::Point x : {geometry::Point{0.05, 0.55}, geometry::Point{0.31, 0.52}, geometry::Point{0.2, 0.9},
                                   geometry::Point{0.1, 0.99}})
     {
       const auto u = problem.displacement(x);
+      rigid_err    = std::max(rigid_err, geometry::norm(u - geometry::Point{0., delta}) / delta);
       EXPECT_NEAR(u.x, 0., 1e-8 * delta) << "P at " << to_text(x);
       EXPECT_NEAR(u.y, delta, 1e-8 * delta) << "P at " << to_text(x);
     }
@@ -67,5 +73,8 @@ TEST(GlobalJunction, ACrackJoinedToAnotherCutsOffTheBlockBetweenThem)
       const auto left = problem.displacement({0.315 - 1e-6, 0.515 - below});
       const auto right_of_s = problem.displacement({0.315 + 1e-6, 0.515 - below});
       EXPECT_LT(geometry::norm(left - right_of_s), 1e-4 * delta) << below << " below M";
+      jump = std::max(jump, geometry::norm(left - right_of_s) / delta);
     }
+  test::metric("global.junction_block_rigid_err", rigid_err);
+  test::metric("global.junction_jump_below_over_delta", jump);
 }
