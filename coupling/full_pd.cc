@@ -127,6 +127,14 @@ namespace pumpd::coupling
         throw InvalidParameter("Traction", scene.conditions.tractions.front().place.name,
                                "full PD drives a scene by one displacement: tractions cannot be applied (prescribe a "
                                "displacement, or load through a point force, which becomes a loading pad)");
+      const double on_face = 1e-8 * std::max(o.width(), o.height());
+      for (std::size_t a = 0; a < scene.cracks.size(); ++a)
+        for (std::size_t b = 0; b < scene.cracks.size(); ++b)
+          for (const Point end : {scene.cracks[a].front(), scene.cracks[a].back()})
+            if (a != b && distance_to_polyline(end, scene.cracks[b]) <= on_face)
+              throw InvalidParameter("Initial cracks", to_text(scene.cracks[a]) + " | " + to_text(scene.cracks[b]),
+                                     "full PD traces a crack from its tips: an end on another crack's face (a "
+                                     "junction) is grown by lefm-growth and global-local; give the cracks apart");
     }
 
     /// The prescribed regions of the scene, with the displacement of each per unit control

@@ -243,7 +243,8 @@ namespace pumpd::coupling
       return 1e-8 * std::max(box.width(), box.height());
     }
 
-    /// The scene's cracks (an edge crack has one tip, an interior crack two).
+    /// The scene's cracks (an edge crack has one tip, an interior crack two; an end on another
+    /// crack's face is a junction: a scene's T, or a crack that joined another before a resume).
     std::vector<global::Crack> the_cracks(const std::vector<geometry::Polyline> &polylines, const Scene &scene)
     {
       if (polylines.empty())
@@ -251,6 +252,7 @@ namespace pumpd::coupling
       std::vector<global::Crack> cracks;
       for (const auto &p : polylines)
         cracks.emplace_back(p, scene.body, crack_tolerance(scene));
+      global::join_touching(cracks, crack_tolerance(scene));
       return cracks;
     }
 
@@ -292,7 +294,6 @@ namespace pumpd::coupling
                                    "the checkpoint holds " + std::to_string(state.cracks.size()) +
                                      " cracks, the scene " + std::to_string(cracks.size()));
           cracks = the_cracks(state.cracks, scene);
-          global::join_touching(cracks, crack_tolerance(scene));
           global.restore(state.refinements);
           for (std::size_t e = 0; e < tracks.size(); ++e)
             {

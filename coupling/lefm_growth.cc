@@ -156,6 +156,7 @@ namespace pumpd::coupling
       scene.crack(); // names "Initial cracks"
     for (const auto &line : scene.cracks)
       cracks.emplace_back(line, scene.body, tolerance);
+    global::join_touching(cracks, tolerance);
     check_clearance(cracks, s.global.tip_radius);
     GlobalProblem global(scene, s.global);
     Recorder      recorder(scene);

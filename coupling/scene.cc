@@ -62,9 +62,10 @@ namespace pumpd::coupling
                       Patterns::Double(1., 1e8));
     prm.add_parameter("Initial cracks", initial_cracks,
                       "Crack polylines \"x1,y1; x2,y2; ...\" [m], several separated by |. An end on the outline or on "
-                      "a hole's rim is a mouth, every other end a tip; vertices inside the body, segments crossing "
-                      "neither the outline nor a hole; two cracks neither touch nor cross and keep at least a tenth of "
-                      "the mesh cell apart where they come closest. LEFM growth, global-local and full PD grow several "
+                      "a hole's rim is a mouth, an end on another crack's face a junction (lefm-growth and global-local), "
+                      "every other end a tip; vertices inside the body, segments crossing neither the outline nor a "
+                      "hole; two cracks do not cross and keep at least a tenth of the mesh cell apart where they come "
+                      "closest, but at a junction. LEFM growth, global-local and full PD grow several "
                       "cracks. Empty: no crack; global-local and full PD start one where the material first fails "
                       "(section Initiation), LEFM growth lists where one would start and stops.",
                       Patterns::Anything());
@@ -508,16 +509,41 @@ namespace pumpd::coupling
                                  "; prescribe more components (e.g. ux and uy at one point and uy at another)");
     }
 
+    /// True if vertex k of `line` is an end of it that lies within `tolerance` of `other` (a junction).
+    bool junction_end(const geometry::Polyline &line, std::size_t k, const geometry::Polyline &other, double tolerance)
+    {
+      if (k != 0 && k + 1 != line.size())
+        return false;
+      for (std::size_t s = 0; s + 1 < other.size(); ++s)
+        if (geometry::distance_to_segment(line[k], other[s], other[s + 1]) <= tolerance)
+          return true;
+      return false;
+    }
+
+    /// The line with its junction ends on `other` pulled back along their segments by a millionth
+    /// of the segment: what must neither touch nor cross `other`.
+    geometry::Polyline short_of_junctions(geometry::Polyline line, const geometry::Polyline &other, double tolerance)
+    {
+      const std::size_t last = line.size() - 1;
+      if (junction_end(line, last, other, tolerance))
+        line[last] = line[last] - 1e-6 * (line[last] - line[last - 1]);
+      if (junction_end(line, 0, other, tolerance))
+        line[0] = line[0] - 1e-6 * (line[0] - line[1]);
+      return line;
+    }
+
     /// The smallest distance between two polylines that do not cross, and the vertex where it is
-    /// taken (the nearest points of two disjoint segments include an end of one of them).
-    std::pair<double, Point> polyline_gap(const geometry::Polyline &a, const geometry::Polyline &b)
+    /// taken (the nearest points of two disjoint segments include an end of one of them); a
+    /// junction end (on the other polyline) does not count.
+    std::pair<double, Point> polyline_gap(const geometry::Polyline &a, const geometry::Polyline &b, double tolerance)
     {
       std::pair<double, Point> best{std::numeric_limits<double>::infinity(), Point{}};
       for (const auto &[from, to] : {std::pair{&a, &b}, std::pair{&b, &a}})
-        for (const Point &p : *from)
-          for (std::size_t s = 0; s + 1 < to->size(); ++s)
-            if (const double d = geometry::distance_to_segment(p, (*to)[s], (*to)[s + 1]); d < best.first)
-              best = {d, p};
+        for (std::size_t k = 0; k < from->size(); ++k)
+          if (!junction_end(*from, k, *to, tolerance))
+            for (std::size_t s = 0; s + 1 < to->size(); ++s)
+              if (const double d = geometry::distance_to_segment((*from)[k], (*to)[s], (*to)[s + 1]); d < best.first)
+                best = {d, (*from)[k]};
       return best;
     }
 
@@ -566,15 +592,20 @@ namespace pumpd::coupling
           cracks.push_back(crack);
         }
       // Two cracks must keep apart by a tenth of the mesh cell where they come closest (closer,
-      // the Heaviside enrichment of one node's support could not tell them apart).
+      // the Heaviside enrichment of one node's support could not tell them apart), except at a
+      // junction: an end of one on the other's face, as a crack that grew into another ends.
       for (std::size_t a = 0; a < cracks.size(); ++a)
         for (std::size_t b = a + 1; b < cracks.size(); ++b)
           {
-            const std::string pair = to_text(cracks[a]) + " | " + to_text(cracks[b]);
-            for (std::size_t s = 0; s + 1 < cracks[a].size(); ++s)
-              if (geometry::segment_crosses_polyline(cracks[a][s], cracks[a][s + 1], cracks[b]))
-                throw InvalidParameter("Initial cracks", pair, "two cracks touch or cross: give them as one polyline");
-            const auto [gap, at] = polyline_gap(cracks[a], cracks[b]);
+            const std::string        pair = to_text(cracks[a]) + " | " + to_text(cracks[b]);
+            const geometry::Polyline short_a = short_of_junctions(cracks[a], cracks[b], tolerance),
+                                     short_b = short_of_junctions(cracks[b], cracks[a], tolerance);
+            for (std::size_t s = 0; s + 1 < short_a.size(); ++s)
+              if (geometry::segment_crosses_polyline(short_a[s], short_a[s + 1], short_b))
+                throw InvalidParameter("Initial cracks", pair,
+                                       "two cracks touch or cross: an end of one may lie on the other's face (a "
+                                       "junction), no more; give a crack that crosses another as two");
+            const auto [gap, at] = polyline_gap(cracks[a], cracks[b], tolerance);
             const auto cell = dealii::GridTools::find_active_cell_around_point(tria, dealii::Point<2>(at.x, at.y));
             const double limit = cell.state() == dealii::IteratorState::valid ? 0.1 * cell->diameter() : 0.;
             if (gap < limit)

@@ -259,3 +259,23 @@ TEST(LefmGrowth, TheOtherTipsGoOnAfterAJoin)
   EXPECT_GE(interior_growth_after, 2u) << "the interior crack grows after the join";
   EXPECT_GT(geometry::length(interior), 0.06 + 2 * 0.004);
 }
+
+// The same T given at set-up (the notch ends on the interior crack's face): the end is a junction,
+// not a tip, so the first solve has the interior crack's two tips only, and the body is whole.
+TEST(LefmGrowth, ATGivenAtSetUpIsAJunction)
+{
+  auto p                 = coarse(beam);
+  p.scene.initial_cracks = "0.1016,0; 0.1016,0.0464 | 0.07,0.0464; 0.13,0.0464";
+  p.lefm.max_steps       = 2;
+  const auto r           = run(p);
+  std::size_t first = 0;
+  for (const auto &st : r.steps)
+    if (st.step == 0)
+      {
+        ++first;
+        EXPECT_EQ(st.crack, 1u);
+      }
+  EXPECT_EQ(first, 2u);
+  EXPECT_EQ(r.stop_reason.find("cut the body through"), std::string::npos) << r.stop_reason;
+  EXPECT_GT(r.increments, 0u);
+}
