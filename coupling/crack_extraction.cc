@@ -188,8 +188,8 @@ namespace pumpd::coupling
     }
 
     /// Where the trace from p along t ends on one of the faces: the first face point along t
-    /// within `reach`, or, if `nearest` is given, else the faces' point nearest to q when it lies
-    /// within `nearest`.
+    /// within `reach`, else the faces' point nearest to q when it lies within `nearest` and ahead
+    /// of p.
     std::optional<Point> face_reached(Point p, Point t, double reach, Point q, double nearest,
                                       const std::vector<geometry::Polyline> &faces)
     {
@@ -199,7 +199,8 @@ namespace pumpd::coupling
       double               least = nearest;
       for (const auto &face : faces)
         for (std::size_t k = 0; k + 1 < face.size(); ++k)
-          if (const Point x = geometry::nearest_on_segment(q, face[k], face[k + 1]); geometry::norm(x - q) < least)
+          if (const Point x = geometry::nearest_on_segment(q, face[k], face[k + 1]);
+              geometry::norm(x - q) < least && geometry::dot(x - p, t) > 0.)
             {
               least = geometry::norm(x - q);
               best  = x;

@@ -143,7 +143,6 @@ namespace pumpd::coupling
       bool                          by_lefm = false;
       bool                          grows   = false; ///< its increment goes into the crack at this exchange's load
       std::string                   stop;            ///< why the tip stopped at this exchange ("" while it goes on)
-      bool                          joined  = false; ///< it met another crack's face and joined it
     };
 
     /// One run of the cycle: its parts (global problem, a box and a controller per tip, recorder)
@@ -638,7 +637,7 @@ namespace pumpd::coupling
         }
       global.scale_to(lambda);
       // The run goes on while a tip goes on and the body is whole (crack_network.h).
-      if (global::cuts_off_a_piece(cracks, scene.body, crack_tolerance(scene)))
+      if (global::cuts_off_a_piece(cracks, scene.body, crack_tolerance(scene), s.growth.hole_margin))
         stopped_tips.push_back(std::string(cracks.size() == 1 ? "the crack" : "the cracks") + " cut the body through");
       else
         for (std::size_t c = 0; c < cracks.size(); ++c)
@@ -672,7 +671,6 @@ namespace pumpd::coupling
           return;
         }
       crack.join(tip_index(track), face->at, cracks[face->crack]);
-      part.joined = true;
       part.stop   = "crack " + std::to_string(track / 2 + 1) + " joined crack " + std::to_string(face->crack + 1) +
                   " at " + to_text(face->at);
     }

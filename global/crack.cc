@@ -152,7 +152,7 @@ namespace pumpd::global
   const Crack::Junction *Crack::junction_beyond(Point x) const
   {
     for (const auto &j : junction)
-      if (j && dot(x - j->at, j->n) < 0. && dot(x - j->at, j->d) > 0.)
+      if (j && dot(x - j->at, j->d) > 0. && (signed_distance_to(j->face, x) >= 0. ? 1 : -1) != j->near)
         return &*j;
     return nullptr;
   }
@@ -276,12 +276,13 @@ namespace pumpd::global
     const std::size_t last    = points.size() - 1;
     const Point       segment = front ? points[1] - points[0] : points[last] - points[last - 1];
     Junction          j;
-    j.at               = at;
-    j.d                = front ? unit(points[0] - points[1]) : unit(segment);
-    const Point along  = unit(o[face + 1] - o[face]);
-    j.n                = dot(left_normal(along), j.d) > 0. ? -1. * left_normal(along) : left_normal(along);
-    const Point back   = dot(along, j.d) <= 0. ? along : -1. * along;
-    j.beyond           = cross(segment, back) >= 0. ? 1 : -1;
+    j.at              = at;
+    j.d               = front ? unit(points[0] - points[1]) : unit(segment);
+    j.face            = o;
+    j.near            = signed_distance_to(o, at - (1e-3 * norm(segment)) * j.d) >= 0. ? 1 : -1;
+    const Point along = unit(o[face + 1] - o[face]);
+    const Point back  = dot(along, j.d) <= 0. ? along : -1. * along;
+    j.beyond          = cross(segment, back) >= 0. ? 1 : -1;
     junction[front ? 0 : 1] = j;
     update_tips();
   }

@@ -12,10 +12,10 @@
 //   tip frame: position, unit direction of propagation (along the end segment, outward).
 //   (r, theta) about a tip: r = |x - tip|, theta = side(x) acos((x - tip).d / r) in [-pi, pi],
 //           so theta = +-pi on the crack faces even when the crack behind the tip is kinked.
-//   H(x): the Heaviside function, sign(phi). Beyond a junction (on the other crack's far side of
-//           its face line at the junction, ahead of the junction along the joined end) it is the
-//           constant H has next to that face on the far side, so that the joined crack does not run
-//           on through the crack it joined (Daux et al. 2000, the junction function).
+//   H(x): the Heaviside function, sign(phi). Beyond a junction (across the crack it joined, by that
+//           crack's level set, and ahead of the junction along the joined end) it is the constant
+//           H has next to that face on the far side, so that the joined crack does not run on
+//           through the crack it joined (Daux et al. 2000, the junction function).
 // Branch functions (Fleming et al. 1997; Moes et al. 1999):
 //   F1 = sqrt(r) sin(t/2), F2 = sqrt(r) cos(t/2), F3 = sqrt(r) sin(t/2) sin t, F4 = sqrt(r) cos(t/2) sin t
 // with grad theta = side(x) sign(y') grad(polar angle), y' the coordinate normal to the tip direction.
@@ -84,13 +84,15 @@ namespace pumpd::global
     std::array<bool, 2> junctions() const { return {{junction[0].has_value(), junction[1].has_value()}}; }
 
   private:
-    /// Where an end joined another crack: H is `beyond` where (x - at).n < 0 and (x - at).d > 0.
+    /// Where an end joined another crack: H is `beyond` where (x - at).d > 0 and x lies on the
+    /// other side of the other crack (its level set, as it was at the join) than this crack.
     struct Junction
     {
-      Point at;
-      Point n; ///< the other crack's face normal at `at`, towards this crack
-      Point d; ///< the direction of the joined end, out of the crack (into the other crack)
-      int   beyond = 1;
+      Point              at;
+      Point              d; ///< the direction of the joined end, out of the crack (into the other crack)
+      geometry::Polyline face;      ///< the other crack's polyline
+      int                near = 1;  ///< the sign of the other crack's level set on this crack's side
+      int                beyond = 1;
     };
 
     void update_tips();

@@ -48,7 +48,8 @@ namespace pumpd::global
     }
   } // namespace
 
-  bool cuts_off_a_piece(const std::vector<Crack> &cracks, const geometry::Body &body, double tolerance)
+  bool cuts_off_a_piece(const std::vector<Crack> &cracks, const geometry::Body &body, double tolerance,
+                        double hole_margin)
   {
     // Nodes: 0 the outline, 1 + h hole h, 1 + holes + c crack c.
     const std::size_t first_crack = 1 + body.holes().size();
@@ -60,7 +61,7 @@ namespace pumpd::global
           {
             const Point end = e == 0 ? v.front() : v.back();
             std::size_t node;
-            if (cracks[c].junctions()[e])
+            if (cracks[c].junctions()[e] && cracks.size() > 1)
               node = first_crack + nearest_other(cracks, c, end);
             else if (body.outline().distance(end) <= tolerance)
               node = 0;
@@ -68,7 +69,7 @@ namespace pumpd::global
               {
                 node = first_crack;
                 for (std::size_t h = 0; h < body.holes().size(); ++h)
-                  if (body.holes()[h].distance(end) <= tolerance)
+                  if (body.holes()[h].distance(end) <= hole_margin + tolerance)
                     node = 1 + h;
                 if (node == first_crack)
                   continue; // a tip

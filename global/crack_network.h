@@ -17,8 +17,10 @@
 namespace pumpd::global
 {
   /// True if the cracks, through their mouths and junctions, cut a piece off the body; ends
-  /// within `tolerance` of the outline or a hole's rim are mouths.
-  bool cuts_off_a_piece(const std::vector<Crack> &cracks, const geometry::Body &body, double tolerance);
+  /// within `tolerance` of the outline, or within `hole_margin` + `tolerance` of a hole's rim (where
+  /// growth stops a tip that reached the hole), open on it.
+  bool cuts_off_a_piece(const std::vector<Crack> &cracks, const geometry::Body &body, double tolerance,
+                        double hole_margin = 0.);
 
   /// Joins every tip that lies within `tolerance` of another crack's face to that crack (Crack::join):
   /// the junctions of cracks rebuilt from their polylines.

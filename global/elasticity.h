@@ -129,8 +129,8 @@ namespace pumpd::global
     void set_crack(std::optional<Crack> crack);
     /// The crack when there is exactly one, none otherwise.
     const std::optional<Crack> &crack() const;
-    /// Any number of cracks, each with its own enrichment. Cracks must not cross or touch each
-    /// other (a crack end on another crack's face is not enriched as a junction).
+    /// Any number of cracks, each with its own enrichment. Cracks must not cross; a crack end on
+    /// another crack's face is a junction (Crack::join, Crack::side).
     void set_cracks(std::vector<Crack> cracks);
     const std::vector<Crack> &cracks() const;
 

@@ -16,9 +16,9 @@
 //   (initiation.disc.position_err_over_delta). lambda_i = sigma_s / sigma_xx within 3 % of the
 //   centre's value above (initiation.disc.load_rel_err): the plateau's 2 % and the scatter.
 // - The crack: an interior crack (both ends more than a horizon inside) through the site (within
-//   a lattice spacing), which the cycle grows at its tips: at every exchange by at least a Minimum
-//   advance (the tip nearer the centre, where the tension is larger, first), its ends staying
-//   within R / 5 of the loaded diameter. Its chord's angle
+//   a lattice spacing), which the cycle grows at its tips (the one nearer the centre, where the
+//   tension is larger, first): by more than two Minimum advances in the two exchanges, its ends
+//   staying within R / 5 of the loaded diameter. Its chord's angle
 //   from the loaded diameter is printed (initiation.disc.angle_err_deg), not checked: a real disc
 //   splits along the diameter, but Lipton's bond law, where the tension is uniform over several
 //   horizons, localises first in bands inclined by about 25 degrees to it (docs/peridynamics.md,
@@ -99,11 +99,8 @@ TEST(BrazilianDisc, AnInteriorCrackFormsOnTheLoadedDiameterAndGrowsAtItsTips)
   EXPECT_LT(coupling::distance_to_polyline(site.position, nucleated), p.pd.spacing());
   EXPECT_GE(lambda / site.load_factor, 0.4);
   EXPECT_LE(lambda / site.load_factor, 1.0);
-  // Grown at its tips in both exchanges (the grown crack holds the nucleated one), along the
-  // loaded diameter.
+  // Grown at its tips in both exchanges, along the loaded diameter.
   EXPECT_GT(geometry::length(grown), geometry::length(nucleated) + 2. * p.cycle.exchange.min_advance);
   for (const Point end : {grown.front(), grown.back()})
     EXPECT_LT(std::abs(end.x), 0.2 * radius) << geometry::to_text(end);
-  EXPECT_GE(std::max(grown.front().y, grown.back().y), std::max(nucleated.front().y, nucleated.back().y) - 1e-12);
-  EXPECT_LE(std::min(grown.front().y, grown.back().y), std::min(nucleated.front().y, nucleated.back().y) + 1e-12);
 }

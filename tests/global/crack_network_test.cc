@@ -1,7 +1,8 @@
 // The crack network: whether cracks, through their mouths and junctions, cut a piece off the body,
 // for every way a piece can come off (two mouths on the outline, two cracks between the outline and
-// a hole, a crack joined to one that opens on the outline, an interior crack joined at both ends)
-// and the ways it cannot; and the junctions of cracks rebuilt from their polylines.
+// a hole, also where growth stopped them a margin short of it, a crack joined to one that opens on
+// the outline, an interior crack joined at both ends) and the ways it cannot; and the junctions of
+// cracks rebuilt from their polylines.
 #include <gtest/gtest.h>
 
 #include <vector>
@@ -40,6 +41,12 @@ TEST(CrackNetwork, ACrackToAHoleCutsOnlyWithASecondOne)
   EXPECT_FALSE(cuts_off_a_piece(cracks, holed_plate, tol));
   cracks[1].grow(0, {1.3, 0.5});
   EXPECT_TRUE(cuts_off_a_piece(cracks, holed_plate, tol)) << "the plate falls in two";
+
+  // Growth stops a tip a margin short of the hole it reached: within the margin it opens on it.
+  std::vector<Crack> stopped{Crack({{0., 0.5}, {1.09, 0.5}}, holed_plate, tol),
+                             Crack({{2., 0.5}, {1.31, 0.5}}, holed_plate, tol)};
+  EXPECT_FALSE(cuts_off_a_piece(stopped, holed_plate, tol));
+  EXPECT_TRUE(cuts_off_a_piece(stopped, holed_plate, tol, 0.01 + 1e-12));
 }
 
 // A T: an edge crack joined to an interior crack leaves the body whole until the interior crack

@@ -450,6 +450,20 @@ TEST(Crack, JunctionFunctionIsConstantAcrossTheCrackItJoined)
     }
 }
 
+// A junction at a kink of the crack it joined: across that crack is decided by its own level set,
+// not by one segment's line, so H is one constant everywhere across it ahead of the junction, on
+// both sides of the kink.
+TEST(Crack, JunctionAtAKinkFollowsTheKinkedFace)
+{
+  const Crack face({{0.2, 0.1}, {0.6, 0.5}, {1.2, 0.5}}, plate, tol);
+  Crack       s({{0.6, 0.}, {0.6, 0.3}}, plate, tol);
+  s.join(0, {0.6, 0.5}, face);
+  const int beyond = s.side({0.62, 0.9});
+  for (const Point x : {Point{0.65, 0.52}, Point{0.9, 0.51}, Point{0.55, 0.9}, Point{0.61, 0.505}})
+    EXPECT_EQ(s.side(x), beyond) << to_text(x);
+  EXPECT_NE(s.side({0.59, 0.45}), s.side({0.61, 0.45})) << "below the junction H changes across the joined crack";
+}
+
 // distance: to the segments, not to the level set's extension beyond the tips.
 TEST(Crack, DistanceIsToTheSegments)
 {
