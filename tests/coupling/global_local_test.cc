@@ -120,8 +120,9 @@ TEST(GlobalLocal, ResumedRunWithHalvedBoxesMatchesTheUninterruptedOne)
     }
 }
 
-// Cracks that meet, on the coarse Case I beam (m = 8): the notch below a horizontal interior crack
-// 21 mm above its tip grows up into that crack's face and joins it (its trace ends on the face);
+// Cracks that meet (prm/beam-t-junction.prm: the coarse Case I beam, m = 8): the notch below a
+// horizontal interior crack 21 mm above its tip grows up into that crack's face and joins it (its
+// trace ends on the face);
 // the body stays whole, so the cycle goes on, and the interior crack's right tip, now wedged open
 // by the notch (K_II / K_I about -0.8: a kink of about 50 degrees), grows from the junction-enriched
 // solution in every exchange after the join. Resumed after the join (the checkpoint holds
@@ -129,11 +130,8 @@ TEST(GlobalLocal, ResumedRunWithHalvedBoxesMatchesTheUninterruptedOne)
 TEST(GlobalLocal, TheOtherCrackGrowsAfterAJoinAndAResumedRunFindsTheJunction)
 {
   const auto t_scene = [](const std::string &output, unsigned int exchanges) {
-    auto p                    = test::scene_file("tests/regression/ingraffea-case1-coarse.prm", output);
-    p.scene.initial_cracks    = "0.1016,0; 0.1016,0.0254 | 0.07,0.0464; 0.13,0.0464";
-    p.scene.reference_path    = "";
-    p.pd.horizon_over_spacing = 8;
-    p.cycle.max_exchanges     = exchanges;
+    auto p                = test::scene_file("prm/beam-t-junction.prm", output);
+    p.cycle.max_exchanges = exchanges;
     return p;
   };
   const auto a = run(t_scene("global_local_t_whole", 8));
