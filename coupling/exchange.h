@@ -41,7 +41,7 @@ namespace pumpd::coupling
   /// or the lambda_i of a nucleation) to `out`.
   ExchangeOutcome run_exchange(const local::PdModel &model, const BoundaryTransfer &transfer,
                                ExchangeController &controller, const std::vector<TipState> &tips,
-                               const std::vector<double>                      &allowed,
+                               const std::vector<double> &allowed,
                                const std::vector<std::vector<geometry::Polyline>> &faces,
                                const std::function<bool(const geometry::Polyline &)> &arrives,
                                const PeridynamicsSettings &pd, std::ostream &out,
