@@ -90,9 +90,15 @@ namespace pumpd::coupling
                                const std::function<bool(const geometry::Polyline &)> &arrives,
                                const PeridynamicsSettings &pd, std::ostream &out, const std::string &unit)
   {
-    ExtractionSettings extraction;
-    extraction.threshold = pd.crack_damage;
-    extraction.horizon   = pd.horizon;
+    // Per tip: its trace ends on the other cracks' faces.
+    std::vector<ExtractionSettings> extraction(tips.size());
+    for (std::size_t k = 0; k < tips.size(); ++k)
+      {
+        extraction[k].threshold = pd.crack_damage;
+        extraction[k].horizon   = pd.horizon;
+        if (!faces.empty())
+          extraction[k].faces = faces[k];
+      }
     local::BoundaryLayer           layer(model);
     const local::DynamicRelaxation relax(model, pd.tolerance, pd.max_iterations);
     const double                   lambda_c = tips.front().critical_load_factor;
@@ -125,10 +131,7 @@ namespace pumpd::coupling
         try
           {
             for (std::size_t k = 0; k < tips.size(); ++k)
-              {
-                extraction.faces = faces.empty() ? std::vector<geometry::Polyline>{} : faces[k];
-                r.increments.push_back(extract_crack(damage, tips[k].position, tips[k].direction, extraction));
-              }
+              r.increments.push_back(extract_crack(damage, tips[k].position, tips[k].direction, extraction[k]));
           }
         catch (const CrackBranching &e)
           {

@@ -22,6 +22,7 @@
 #include "crack.h"
 #include "error.h"
 #include "mesh.h"
+#include "path_metrics.h"
 #include "text.h"
 
 namespace pumpd::coupling
@@ -512,12 +513,7 @@ namespace pumpd::coupling
     /// True if vertex k of `line` is an end of it that lies within `tolerance` of `other` (a junction).
     bool junction_end(const geometry::Polyline &line, std::size_t k, const geometry::Polyline &other, double tolerance)
     {
-      if (k != 0 && k + 1 != line.size())
-        return false;
-      for (std::size_t s = 0; s + 1 < other.size(); ++s)
-        if (geometry::distance_to_segment(line[k], other[s], other[s + 1]) <= tolerance)
-          return true;
-      return false;
+      return (k == 0 || k + 1 == line.size()) && distance_to_polyline(line[k], other) <= tolerance;
     }
 
     /// The line with its junction ends on `other` pulled back along their segments by a millionth
