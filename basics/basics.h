@@ -8,6 +8,7 @@
 //   lefm.h      Williams near-tip fields (PD driving data, interaction integral, exact solutions)
 //   csv.h       the CSV writer (flushed row by row) and reader
 //   pvd.h       the ParaView series index (.pvd)
+//   vtu.h       the VTU writer (unstructured grids, arrays as base64 binary)
 //   text.h      a file's bytes, trim
 //   program.h   another program run as a child process: exit status, wall time, peak memory
 #pragma once
@@ -21,3 +22,4 @@
 #include "program.h"
 #include "pvd.h"
 #include "text.h"
+#include "vtu.h"

@@ -4,7 +4,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <optional>
 #include <stdexcept>
@@ -12,6 +11,7 @@
 #include "elasticity_impl.h"
 #include "error.h"
 #include "lefm.h"
+#include "vtu.h"
 
 namespace pumpd::global
 {
@@ -427,112 +427,73 @@ namespace pumpd::global
 
   void EnrichedElasticity::Impl::write_vtu(const std::string &filename) const
   {
-    struct SubCell
-    {
-      std::vector<Point>           corner;
-      std::vector<Tensor<1, 2>>    u;
-      Tensor<2, 2>                 stress;
-      int                          enrichment;
+    // Each cell, or each triangle of a cut cell's quadrature partition (the displacement jumps
+    // across the crack), is a VTU cell of its own: its corners' displacements and the stress at
+    // its centre.
+    VtuGrid  grid;
+    VtuField displacement{"displacement", 3, {}}, stress{"stress", 3, {}}, von_mises{"von_mises", 1, {}},
+      kind{"enrichment", 1, {}, true};
+    const double lambda = material.lambda(), mu = material.mu();
+    const double nu     = material.plane_strain ? material.poisson_ratio : 0.;
+    const auto   add    = [&](FEValues<2> &fv, const std::vector<LocalFunction> &functions, const Sides &piece_sides,
+                         int enrichment) {
+      const unsigned int        corners = fv.n_quadrature_points - 1;
+      std::vector<Tensor<1, 2>> u;
+      std::vector<Tensor<2, 2>> grad;
+      Sides                     side;
+      for (unsigned int q = 0; q <= corners; ++q)
+        side.insert(side.end(), piece_sides.begin(), piece_sides.end());
+      field(fv, functions, side, u, grad);
+      grid.add_cell(std::int64_t(grid.n_points()), corners, corners == 3 ? 5 : 9);
+      for (unsigned int q = 0; q < corners; ++q)
+        {
+          grid.points.insert(grid.points.end(), {fv.quadrature_point(q)[0], fv.quadrature_point(q)[1]});
+          displacement.values.insert(displacement.values.end(), {u[q][0], u[q][1], 0.});
+        }
+      const Tensor<2, 2> sigma = stress_of(grad.back(), lambda, mu);
+      const double sx = sigma[0][0], sy = sigma[1][1], sz = nu * (sx + sy), txy = sigma[0][1];
+      stress.values.insert(stress.values.end(), {sx, sy, txy});
+      von_mises.values.push_back(
+        std::sqrt(0.5 * ((sx - sy) * (sx - sy) + (sy - sz) * (sy - sz) + (sz - sx) * (sz - sx)) + 3. * txy * txy));
+      kind.values.push_back(enrichment);
     };
-    std::vector<SubCell> out;
-    const double         lambda = material.lambda(), mu = material.mu();
+    const auto corners_and_centre = [](const std::vector<RefPoint> &corners) {
+      std::vector<dealii::Point<2>> points(corners.begin(), corners.end());
+      RefPoint                      centre;
+      for (const auto &p : corners)
+        centre += p / double(corners.size());
+      points.push_back(centre);
+      return Quadrature<2>(points);
+    };
+    const UpdateFlags flags = update_values | update_gradients | update_quadrature_points;
+    FEValues<2>       whole(mapping, fe,
+                      corners_and_centre({RefPoint(0, 0), RefPoint(1, 0), RefPoint(1, 1), RefPoint(0, 1)}), flags);
+    const unsigned int n = stride();
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         const CellData &data      = cells[cell->active_cell_index()];
         const auto      functions = local_functions(cell);
-        int             enrichment = 0;
-        for (const auto &f : functions)
-          enrichment = std::max(enrichment, f.kind == 0 ? 1 : f.kind > 0 ? 2 : 0);
-        std::vector<std::vector<RefPoint>> pieces;
-        std::vector<Sides>                 sides; // per piece, per crack
-        const unsigned int                 n = stride();
         if (data.cut)
           for (unsigned int t = 0; t < data.triangles.size(); ++t)
             {
               const auto &v = data.triangles[t].vertex;
-              pieces.push_back({v[0], v[1], v[2]});
-              sides.emplace_back(data.triangle_side.begin() + t * n, data.triangle_side.begin() + (t + 1) * n);
+              FEValues<2> piece(mapping, fe, corners_and_centre({v[0], v[1], v[2]}), flags);
+              piece.reinit(cell);
+              add(piece, functions,
+                  Sides(data.triangle_side.begin() + t * n, data.triangle_side.begin() + (t + 1) * n), 3);
             }
         else
           {
-            pieces.push_back({RefPoint(0, 0), RefPoint(1, 0), RefPoint(1, 1), RefPoint(0, 1)});
-            sides.push_back(cracks.empty() ? Sides(1, 1) : data.side);
-          }
-        for (unsigned int k = 0; k < pieces.size(); ++k)
-          {
-            std::vector<dealii::Point<2>> points(pieces[k].begin(), pieces[k].end());
-            RefPoint                      centre;
-            for (const auto &p : pieces[k])
-              centre += p / double(pieces[k].size());
-            points.push_back(centre);
-            FEValues<2> fv(mapping, fe, Quadrature<2>(points), update_values | update_gradients | update_quadrature_points);
-            fv.reinit(cell);
-            std::vector<Tensor<1, 2>> u;
-            std::vector<Tensor<2, 2>> grad;
-            Sides side;
-            for (std::size_t i = 0; i < points.size(); ++i)
-              side.insert(side.end(), sides[k].begin(), sides[k].end());
-            field(fv, functions, side, u, grad);
-            SubCell sc;
-            for (unsigned int i = 0; i + 1 < points.size(); ++i)
-              {
-                sc.corner.push_back(to_point(fv.quadrature_point(i)));
-                sc.u.push_back(u[i]);
-              }
-            sc.stress     = stress_of(grad.back(), lambda, mu);
-            sc.enrichment = data.cut ? 3 : enrichment;
-            out.push_back(std::move(sc));
+            int enrichment = 0;
+            for (const auto &f : functions)
+              enrichment = std::max(enrichment, f.kind == 0 ? 1 : f.kind > 0 ? 2 : 0);
+            whole.reinit(cell);
+            add(whole, functions, cracks.empty() ? Sides(1, 1) : data.side, enrichment);
           }
       }
-
-    std::ofstream f(filename);
-    if (!f)
-      throw std::runtime_error("cannot write " + filename);
-    f.precision(10);
-    std::size_t n_points = 0;
-    for (const auto &sc : out)
-      n_points += sc.corner.size();
-    f << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\">\n<UnstructuredGrid>\n"
-      << "<Piece NumberOfPoints=\"" << n_points << "\" NumberOfCells=\"" << out.size() << "\">\n"
-      << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-    for (const auto &sc : out)
-      for (const auto &p : sc.corner)
-        f << p.x << ' ' << p.y << " 0\n";
-    f << "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-    std::size_t next = 0;
-    for (const auto &sc : out)
-      {
-        for (std::size_t i = 0; i < sc.corner.size(); ++i)
-          f << next++ << ' ';
-        f << '\n';
-      }
-    f << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
-    next = 0;
-    for (const auto &sc : out)
-      f << (next += sc.corner.size()) << '\n';
-    f << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-    for (const auto &sc : out)
-      f << (sc.corner.size() == 3 ? 5 : 9) << '\n';
-    f << "</DataArray>\n</Cells>\n<PointData Vectors=\"displacement\">\n"
-      << "<DataArray type=\"Float64\" Name=\"displacement\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-    for (const auto &sc : out)
-      for (const auto &u : sc.u)
-        f << u[0] << ' ' << u[1] << " 0\n";
-    f << "</DataArray>\n</PointData>\n<CellData>\n"
-      << "<DataArray type=\"Float64\" Name=\"stress\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-    for (const auto &sc : out)
-      f << sc.stress[0][0] << ' ' << sc.stress[1][1] << ' ' << sc.stress[0][1] << '\n';
-    f << "</DataArray>\n<DataArray type=\"Float64\" Name=\"von_mises\" format=\"ascii\">\n";
-    const double nu = material.plane_strain ? material.poisson_ratio : 0.;
-    for (const auto &sc : out)
-      {
-        const double sx = sc.stress[0][0], sy = sc.stress[1][1], sz = nu * (sx + sy), txy = sc.stress[0][1];
-        f << std::sqrt(0.5 * ((sx - sy) * (sx - sy) + (sy - sz) * (sy - sz) + (sz - sx) * (sz - sx)) + 3. * txy * txy)
-          << '\n';
-      }
-    f << "</DataArray>\n<DataArray type=\"Int32\" Name=\"enrichment\" format=\"ascii\">\n";
-    for (const auto &sc : out)
-      f << sc.enrichment << '\n';
-    f << "</DataArray>\n</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+    grid.point_data     = {std::move(displacement)};
+    grid.cell_data      = {std::move(stress), std::move(von_mises), std::move(kind)};
+    grid.active_vectors = "displacement";
+    pumpd::write_vtu(filename, grid);
   }
 } // namespace pumpd::global

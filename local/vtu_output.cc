@@ -1,64 +1,44 @@
 #include "vtu_output.h"
 
-#include <filesystem>
-#include <fstream>
-#include <stdexcept>
+#include "vtu.h"
 
 namespace pumpd::local
 {
   namespace
   {
-    void write_field(std::ofstream &out, const std::string &name, const std::vector<double> &field,
-                     const std::vector<std::size_t> &nodes)
+    /// The field's values at the material nodes.
+    VtuField at_nodes(const std::string &name, const std::vector<double> &field, const std::vector<std::size_t> &nodes)
     {
-      out << "<DataArray type=\"Float64\" Name=\"" << name << "\" format=\"ascii\">\n";
+      VtuField f{name, 1, {}};
+      f.values.reserve(nodes.size());
       for (std::size_t i : nodes)
-        out << field[i] << '\n';
-      out << "</DataArray>\n";
+        f.values.push_back(field[i]);
+      return f;
     }
   } // namespace
 
   void write_vtu(const std::string &path, const PdModel &model, const State &s)
   {
-    std::ofstream out(path);
-    if (!out)
-      throw std::runtime_error("cannot write " + path);
-    out.precision(10);
     const auto &nodes = model.nodes();
-    const auto  n     = nodes.size();
-    out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\">\n"
-        << "<UnstructuredGrid>\n<Piece NumberOfPoints=\"" << n << "\" NumberOfCells=\"" << n << "\">\n"
-        << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-    for (std::size_t i : nodes)
+    VtuGrid     grid;
+    VtuField    displacement{"displacement", 3, {}};
+    for (std::size_t c = 0; c < nodes.size(); ++c)
       {
-        const auto p = model.lattice().position(i);
-        out << p.x << ' ' << p.y << " 0\n";
+        const auto p = model.lattice().position(nodes[c]);
+        grid.points.insert(grid.points.end(), {p.x, p.y});
+        grid.add_cell(std::int64_t(c), 1, 1);
+        displacement.values.insert(displacement.values.end(), {s.ux[nodes[c]], s.uy[nodes[c]], 0.});
       }
-    out << "</DataArray>\n</Points>\n<Cells>\n"
-        << "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n";
-    for (std::size_t c = 0; c < n; ++c)
-      out << c << '\n';
-    out << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n";
-    for (std::size_t c = 0; c < n; ++c)
-      out << c + 1 << '\n';
-    out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n";
-    for (std::size_t c = 0; c < n; ++c)
-      out << "1\n";
-    out << "</DataArray>\n</Cells>\n<PointData Scalars=\"damage\" Vectors=\"displacement\">\n"
-        << "<DataArray type=\"Float64\" Name=\"displacement\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-    for (std::size_t i : nodes)
-      out << s.ux[i] << ' ' << s.uy[i] << " 0\n";
-    out << "</DataArray>\n";
-    write_field(out, "damage", model.damage(s), nodes);
-    write_field(out, "stretch_ratio_Z", model.stretch_ratio(s), nodes);
-    write_field(out, "energy_density", model.energy_density(s), nodes);
     std::vector<double> layer(s.ux.size(), 0.);
     for (std::size_t i : model.boundary_layer())
       layer[i] = 1.;
-    write_field(out, "boundary_layer", layer, nodes);
-    out << "</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
-    if (!out)
-      throw std::runtime_error("error while writing " + path);
+    grid.point_data = {std::move(displacement), at_nodes("damage", model.damage(s), nodes),
+                       at_nodes("stretch_ratio_Z", model.stretch_ratio(s), nodes),
+                       at_nodes("energy_density", model.energy_density(s), nodes),
+                       at_nodes("boundary_layer", layer, nodes)};
+    grid.active_scalars = "damage";
+    grid.active_vectors = "displacement";
+    pumpd::write_vtu(path, grid);
   }
 
   void write_vtu(PvdSeries &series, const PdModel &model, const State &s)
