@@ -349,6 +349,7 @@ namespace pumpd::global
   {
     const auto  start = std::chrono::steady_clock::now();
     SolveReport report;
+    use_single_threaded_blas();
     if (settings_.type == SolverSettings::Type::direct)
       {
         // Symmetric diagonal scaling D A D y = D f, D = diag(A)^-1/2, x = D y: the enriched
