@@ -574,9 +574,18 @@ namespace pumpd::local
     return 0.5 * mat.parameters().density * volume * e;
   }
 
+  std::vector<double> PdModel::inflection_stretches() const
+  {
+    std::vector<double> s;
+    for (std::size_t k = 0; k < st.size(); ++k)
+      s.push_back(mat.inflection_stretch(st.length[k] * grid.spacing()));
+    return s;
+  }
+
   std::vector<double> PdModel::damage(const State &s) const
   {
-    const double        h = grid.spacing();
+    const double        h          = grid.spacing();
+    const auto          inflection = inflection_stretches();
     std::vector<double> lost(grid.storage_size(), 0.), all(grid.storage_size(), 0.);
     for_each_existing_bond([&](std::size_t k, std::size_t i, std::size_t j) {
       const double w = st.weight[k];
@@ -584,7 +593,7 @@ namespace pumpd::local
       all[j] += w;
       const double r = st.length[k] * h;
       const double S = ((s.ux[j] - s.ux[i]) * st.ex[k] + (s.uy[j] - s.uy[i]) * st.ey[k]) / r;
-      if (bit(s.broken, k * plane_words, i) || (std::abs(S) > mat.inflection_stretch(r) && !is_linear(k, i) && mat.softens(S)))
+      if (bit(s.broken, k * plane_words, i) || (std::abs(S) > inflection[k] && !is_linear(k, i) && mat.softens(S)))
         {
           lost[i] += w;
           lost[j] += w;
@@ -597,12 +606,13 @@ namespace pumpd::local
 
   std::vector<double> PdModel::stretch_ratio(const State &s) const
   {
-    const double        h = grid.spacing();
+    const double        h          = grid.spacing();
+    const auto          inflection = inflection_stretches();
     std::vector<double> z(grid.storage_size(), 0.);
     for_each_existing_bond([&](std::size_t k, std::size_t i, std::size_t j) {
       const double r = st.length[k] * h;
       const double S = ((s.ux[j] - s.ux[i]) * st.ex[k] + (s.uy[j] - s.uy[i]) * st.ey[k]) / r;
-      const double ratio = mat.softens(S) ? std::abs(S) / mat.inflection_stretch(r) : 0.;
+      const double ratio = mat.softens(S) ? std::abs(S) / inflection[k] : 0.;
       z[i] = std::max(z[i], ratio);
       z[j] = std::max(z[j], ratio);
     });

@@ -176,6 +176,8 @@ namespace pumpd::local
     void forces_in_rows(State &s, std::size_t row_begin, std::size_t row_end, double &dissipated) const;
     template <class BondVisitor>
     void for_each_existing_bond(BondVisitor &&visit) const;
+    /// Per stencil offset: the bond's inflection stretch (Lipton), which depends on its length.
+    std::vector<double> inflection_stretches() const;
 
     LiptonMaterial             mat;
     Lattice                    grid;
