@@ -1,7 +1,6 @@
 #include "text.h"
 
 #include <fstream>
-#include <sstream>
 
 namespace pumpd
 {
@@ -13,11 +12,14 @@ namespace pumpd
 
   std::optional<std::string> file_contents(const std::string &file)
   {
-    std::ifstream in(file, std::ios::binary);
+    std::ifstream in(file, std::ios::binary | std::ios::ate);
     if (!in)
       return std::nullopt;
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
+    std::string bytes(std::size_t(in.tellg()), '\0');
+    in.seekg(0);
+    in.read(bytes.data(), std::streamsize(bytes.size()));
+    if (!in)
+      return std::nullopt;
+    return bytes;
   }
 } // namespace pumpd
