@@ -309,11 +309,10 @@ namespace pumpd::coupling
         for (std::size_t c = 0; c < cracks.size(); ++c)
           for (const auto &t : cracks[c].tips())
             growing |= !is_stopped(c, t);
-        const bool cut_through = global::cuts_off_a_piece(cracks, scene.body, tolerance, s.growth.hole_margin);
-        if (last || !growing || cut_through)
+        const bool cut = global::cuts_off_a_piece(cracks, scene.body, tolerance, s.growth.hole_margin);
+        if (last || !growing || cut)
           {
-            const std::string end = cut_through ? std::string(cracks.size() == 1 ? "the crack" : "the cracks") +
-                                                    " cut the body through"
+            const std::string end = cut ? global::cut_through(cracks)
                                     : step == s.lefm.max_steps ? "maximum steps"
                                     : at_limit                 ? "maximum crack length"
                                                                : "no tip grows";

@@ -48,6 +48,11 @@ namespace pumpd::global
     }
   } // namespace
 
+  std::string cut_through(const std::vector<Crack> &cracks)
+  {
+    return cracks.size() == 1 ? "the crack cut the body through" : "the cracks cut the body through";
+  }
+
   bool cuts_off_a_piece(const std::vector<Crack> &cracks, const geometry::Body &body, double tolerance,
                         double hole_margin)
   {

@@ -9,6 +9,7 @@
 // or one joined to a crack that opens on the outline does.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "body.h"
@@ -21,6 +22,9 @@ namespace pumpd::global
   /// growth stops a tip that reached the hole), open on it.
   bool cuts_off_a_piece(const std::vector<Crack> &cracks, const geometry::Body &body, double tolerance,
                         double hole_margin = 0.);
+
+  /// Why growth stops when cuts_off_a_piece: "the crack cut the body through" (or "the cracks").
+  std::string cut_through(const std::vector<Crack> &cracks);
 
   /// Joins every tip that lies within `tolerance` of another crack's face to that crack (Crack::join):
   /// the junctions of cracks rebuilt from their polylines.
