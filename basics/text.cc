@@ -1,5 +1,6 @@
 #include "text.h"
 
+#include <filesystem>
 #include <fstream>
 
 namespace pumpd
@@ -15,7 +16,10 @@ namespace pumpd
     std::ifstream in(file, std::ios::binary | std::ios::ate);
     if (!in)
       return std::nullopt;
-    std::string bytes(std::size_t(in.tellg()), '\0');
+    const auto size = in.tellg();
+    if (!std::filesystem::is_regular_file(file) || size < 0)
+      return std::nullopt;
+    std::string bytes(std::size_t(size), '\0');
     in.seekg(0);
     in.read(bytes.data(), std::streamsize(bytes.size()));
     if (!in)

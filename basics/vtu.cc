@@ -1,7 +1,9 @@
 #include "vtu.h"
 
+#include <cmath>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <stdexcept>
 
 namespace pumpd
@@ -39,17 +41,30 @@ namespace pumpd
     template <class T>
     void data_array(std::ofstream &out, const std::string &attributes, const std::vector<T> &values)
     {
+      if (values.size() * sizeof(T) > std::numeric_limits<std::uint32_t>::max())
+        throw std::runtime_error("VTU array of " + std::to_string(values.size() * sizeof(T)) +
+                                 " bytes: more than its UInt32 byte count can say");
       const std::uint32_t bytes = std::uint32_t(values.size() * sizeof(T));
       out << "<DataArray " << attributes << " format=\"binary\">\n"
           << base64(reinterpret_cast<const unsigned char *>(&bytes), sizeof(bytes))
           << base64(reinterpret_cast<const unsigned char *>(values.data()), bytes) << "\n</DataArray>\n";
     }
 
-    void field(std::ofstream &out, const VtuField &f, std::size_t entries, const std::string &where)
+    void check(const VtuField &f, std::size_t entries, const std::string &where)
     {
-      if (f.values.size() != entries * f.components)
+      if (f.components == 0 || f.values.size() != entries * f.components)
         throw std::logic_error("VTU " + where + " field " + f.name + ": " + std::to_string(f.values.size()) +
-                               " values for " + std::to_string(entries) + " entries");
+                               " values in " + std::to_string(f.components) + " components for " +
+                               std::to_string(entries) + " entries");
+      if (f.integer)
+        for (double v : f.values)
+          if (!(v == std::round(v) && std::abs(v) <= std::numeric_limits<std::int32_t>::max()))
+            throw std::logic_error("VTU " + where + " field " + f.name + ": " + std::to_string(v) +
+                                   " is not an Int32");
+    }
+
+    void field(std::ofstream &out, const VtuField &f)
+    {
       const std::string attributes =
         "Name=\"" + f.name + "\" NumberOfComponents=\"" + std::to_string(f.components) + "\"";
       if (f.integer)
@@ -77,10 +92,14 @@ namespace pumpd
 
   void write_vtu(const std::string &path, const VtuGrid &grid)
   {
+    const std::size_t n_points = grid.n_points(), n_cells = grid.types.size();
+    for (const auto &f : grid.point_data)
+      check(f, n_points, "point");
+    for (const auto &f : grid.cell_data)
+      check(f, n_cells, "cell");
     std::ofstream out(path);
     if (!out)
       throw std::runtime_error("cannot write " + path);
-    const std::size_t n_points = grid.n_points(), n_cells = grid.types.size();
     out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\""
         << (little_endian() ? "LittleEndian" : "BigEndian") << "\" header_type=\"UInt32\">\n<UnstructuredGrid>\n"
         << "<Piece NumberOfPoints=\"" << n_points << "\" NumberOfCells=\"" << n_cells << "\">\n<Points>\n";
@@ -102,10 +121,10 @@ namespace pumpd
       out << " Vectors=\"" << grid.active_vectors << "\"";
     out << ">\n";
     for (const auto &f : grid.point_data)
-      field(out, f, n_points, "point");
+      field(out, f);
     out << "</PointData>\n<CellData>\n";
     for (const auto &f : grid.cell_data)
-      field(out, f, n_cells, "cell");
+      field(out, f);
     out << "</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
     if (!out)
       throw std::runtime_error("error while writing " + path);

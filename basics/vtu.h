@@ -33,7 +33,8 @@ namespace pumpd
     void add_cell(std::int64_t first, unsigned int corners, std::uint8_t type);
   };
 
-  /// Writes the grid to `path`. Throws std::runtime_error if the file cannot be written or a
-  /// field's length does not match its points or cells.
+  /// Writes the grid to `path`. Throws std::logic_error, before the file is opened, for a field
+  /// without components, of a length that does not match its points or cells, or integer with a
+  /// value that is not an Int32; std::runtime_error if the file cannot be written.
   void write_vtu(const std::string &path, const VtuGrid &grid);
 } // namespace pumpd

@@ -638,7 +638,7 @@ namespace pumpd::coupling
       global.scale_to(lambda);
       // The run goes on while a tip goes on and the body is whole (crack_network.h).
       if (global::cuts_off_a_piece(cracks, scene.body, crack_tolerance(scene), s.growth.hole_margin))
-        stopped_tips.push_back(global::cut_through(cracks));
+        stopped_tips.push_back(global::cut_through_message(cracks));
       else
         for (std::size_t c = 0; c < cracks.size(); ++c)
           for (const auto &tip : cracks[c].tips())

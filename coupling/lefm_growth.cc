@@ -312,7 +312,7 @@ namespace pumpd::coupling
         const bool cut = global::cuts_off_a_piece(cracks, scene.body, tolerance, s.growth.hole_margin);
         if (last || !growing || cut)
           {
-            const std::string end = cut ? global::cut_through(cracks)
+            const std::string end = cut ? global::cut_through_message(cracks)
                                     : step == s.lefm.max_steps ? "maximum steps"
                                     : at_limit                 ? "maximum crack length"
                                                                : "no tip grows";

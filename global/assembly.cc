@@ -19,6 +19,7 @@
 #include <optional>
 #include <set>
 
+#include "blas_threads.h"
 #include "cholesky.h"
 #include "elasticity_impl.h"
 #include "error.h"

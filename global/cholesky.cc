@@ -4,9 +4,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <cholmod.h>
-#include <dlfcn.h>
 
-#include <mutex>
 #include <stdexcept>
 #include <string>
 
@@ -83,16 +81,6 @@ namespace pumpd::global
       Up[n] = int(k);
     }
   } // namespace
-
-  void use_single_threaded_blas()
-  {
-    static std::once_flag once;
-    std::call_once(once, [] {
-      using SetThreads = void (*)(int);
-      if (const auto set = reinterpret_cast<SetThreads>(dlsym(RTLD_DEFAULT, "openblas_set_num_threads")))
-        set(1);
-    });
-  }
 
   bool solve_cholesky(const dealii::SparseMatrix<double> &A, const dealii::Vector<double> &b,
                       dealii::Vector<double> &x)

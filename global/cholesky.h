@@ -21,11 +21,4 @@ namespace pumpd::global
   /// CHOLMOD fails otherwise (out of memory, a matrix too large for its integers).
   bool solve_cholesky(const dealii::SparseMatrix<double> &A, const dealii::Vector<double> &b,
                       dealii::Vector<double> &x);
-
-  /// Runs the BLAS on one thread where it is OpenBLAS (Debian's libopenblas0, found at run time;
-  /// nothing happens with another BLAS). The supernodal blocks of a global problem are small:
-  /// OpenBLAS's threads cost more than they give there, keep polling a core the PD kernel's
-  /// threads then wait for, and split the sums by the number of cores, so that the solution's
-  /// last bits, and with them a coupled crack path, would depend on the machine's core count.
-  void use_single_threaded_blas();
 } // namespace pumpd::global

@@ -48,7 +48,7 @@ namespace pumpd::global
     }
   } // namespace
 
-  std::string cut_through(const std::vector<Crack> &cracks)
+  std::string cut_through_message(const std::vector<Crack> &cracks)
   {
     return cracks.size() == 1 ? "the crack cut the body through" : "the cracks cut the body through";
   }

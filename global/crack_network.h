@@ -24,7 +24,7 @@ namespace pumpd::global
                         double hole_margin = 0.);
 
   /// Why growth stops when cuts_off_a_piece: "the crack cut the body through" (or "the cracks").
-  std::string cut_through(const std::vector<Crack> &cracks);
+  std::string cut_through_message(const std::vector<Crack> &cracks);
 
   /// Joins every tip that lies within `tolerance` of another crack's face to that crack (Crack::join):
   /// the junctions of cracks rebuilt from their polylines.

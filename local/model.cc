@@ -296,22 +296,22 @@ namespace pumpd::local
     // Bonds: exist between material nodes unless the segment leaves the body (through a hole or
     // across a re-entrant part of the outline).
     // A bond can leave the body or cross a crack segment only where its node lies within a bond
-    // length of them: the tests run for those nodes alone.
+    // length of them: the tests run for those nodes alone (the margin covers the rounding of the
+    // node positions x0 + c h).
     const geometry::Body boundary = near_box(reg.body, box, 2. * horizon);
     const auto           crack_segments = crack_segments_near(reg.cracks, box, 2. * horizon);
-    double               reach          = 0.;
+    double               longest_bond   = 0.;
     for (std::size_t k = 0; k < st.size(); ++k)
-      reach = std::max(reach, st.length[k] * h);
-    reach *= 1. + 1e-9;
-    std::vector<char>                      near_boundary(n, 0);
-    std::vector<std::vector<std::uint32_t>> near_segments(n);
+      longest_bond = std::max(longest_bond, st.length[k] * h);
+    longest_bond *= 1. + 1e-9;
+    std::vector<char> near_boundary(n, 0), near_crack(n, 0);
     for (std::size_t i : active_nodes)
       {
         const auto a     = grid.position(i);
-        near_boundary[i] = boundary.clearance(a) <= reach;
-        for (std::size_t c = 0; c < crack_segments.size(); ++c)
-          if (geometry::distance_to_segment(a, crack_segments[c][0], crack_segments[c][1]) <= reach)
-            near_segments[i].push_back(std::uint32_t(c));
+        near_boundary[i] = boundary.clearance(a) <= longest_bond;
+        near_crack[i]    = std::any_of(crack_segments.begin(), crack_segments.end(), [&](const auto &c) {
+          return geometry::distance_to_segment(a, c[0], c[1]) <= longest_bond;
+        });
       }
     for (std::size_t k = 0; k < st.size(); ++k)
       {
@@ -326,8 +326,8 @@ namespace pumpd::local
               continue;
             const std::size_t w = k * plane_words + i / 64;
             exists[w] |= std::uint64_t(1) << (i % 64);
-            if (std::any_of(near_segments[i].begin(), near_segments[i].end(), [&](std::uint32_t c) {
-                  return geometry::segments_intersect(a, b, crack_segments[c][0], crack_segments[c][1]);
+            if (near_crack[i] && std::any_of(crack_segments.begin(), crack_segments.end(), [&](const auto &c) {
+                  return geometry::segments_intersect(a, b, c[0], c[1]);
                 }))
               precrack[w] |= std::uint64_t(1) << (i % 64);
           }

@@ -1,13 +1,17 @@
 // The VTU writer: every array reads back, through its base64 byte count, as the values written
-// (VTK XML format, "binary" inline arrays: a UInt32 byte count and the data, encoded apart).
+// (VTK XML format, "binary" inline arrays: a UInt32 byte count and the data, encoded apart); the
+// encoding is RFC 4648's; a field that does not fit its grid is refused before a file is written.
 #include <gtest/gtest.h>
 
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <map>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "vtu.h"
 
@@ -15,6 +19,11 @@ using namespace pumpd;
 
 namespace
 {
+  std::string temporary(const std::string &name)
+  {
+    return (std::filesystem::temp_directory_path() / name).string();
+  }
+
   std::string decode(const std::string &text)
   {
     std::string out;
@@ -43,6 +52,8 @@ namespace
 
   /// Each DataArray's bytes by its Name (Points: "Points"), checked against its byte count: the
   /// first base64 block (up to its padding) is the UInt32 count, the rest the data.
+  std::map<std::string, std::string> encoded; ///< each array's data as written (base64), by name
+
   std::map<std::string, std::string> arrays(const std::string &file)
   {
     std::ifstream     in(file);
@@ -57,12 +68,17 @@ namespace
         EXPECT_NE(tag.find("format=\"binary\""), std::string::npos) << key;
         std::string body = text.substr(open + 1, close - open - 1);
         body.erase(0, body.find_first_not_of("\n "));
-        const std::string header = decode(body.substr(0, 8)); // 4 bytes: 8 characters with padding
+        body.erase(body.find_last_not_of("\n ") + 1);
+        // 4 bytes: 8 characters, the last two padding; then the data in whole blocks of 4.
+        EXPECT_EQ(body.substr(6, 2), "==") << key;
+        EXPECT_EQ((body.size() - 8) % 4, 0u) << key;
+        const std::string header = decode(body.substr(0, 8));
         std::uint32_t     bytes;
         std::memcpy(&bytes, header.data(), 4);
         const std::string data = decode(body.substr(8));
         EXPECT_EQ(bytes, data.size()) << key;
         found[key] = data;
+        encoded[key] = body.substr(8);
       }
     return found;
   }
@@ -85,9 +101,9 @@ TEST(Vtu, EveryArrayReadsBackAsWritten)
   grid.point_data.push_back({"displacement", 3, {0.1, 0.2, 0., 1. / 3., -2e-7, 0., 5., 6., 0., 7., 8., 0., 9., 1e300, 0.}});
   grid.cell_data.push_back({"kind", 1, {3., -1.}, true});
   grid.active_vectors = "displacement";
-  write_vtu("vtu_test.vtu", grid);
+  write_vtu(temporary("pumpd_vtu_test.vtu"), grid);
 
-  const auto a = arrays("vtu_test.vtu");
+  const auto a = arrays(temporary("pumpd_vtu_test.vtu"));
   ASSERT_EQ(a.size(), 6u);
   const auto xyz = values<double>(a.at("Points"));
   ASSERT_EQ(xyz.size(), 15u);
@@ -104,11 +120,36 @@ TEST(Vtu, EveryArrayReadsBackAsWritten)
   EXPECT_EQ(values<std::int32_t>(a.at("kind")), (std::vector<std::int32_t>{3, -1}));
 }
 
-TEST(Vtu, AFieldOfTheWrongLengthIsRefused)
+TEST(Vtu, AFieldOfTheWrongLengthIsRefusedBeforeTheFileIsWritten)
 {
+  std::filesystem::remove(temporary("pumpd_vtu_test_bad.vtu"));
   VtuGrid grid;
   grid.points = {0., 0., 1., 0., 1., 1.};
   grid.add_cell(0, 3, 5);
   grid.cell_data.push_back({"stress", 3, {1., 2.}});
-  EXPECT_THROW(write_vtu("vtu_test_bad.vtu", grid), std::logic_error);
+  EXPECT_THROW(write_vtu(temporary("pumpd_vtu_test_bad.vtu"), grid), std::logic_error);
+  grid.cell_data = {{"kind", 1, {0.5}, true}};
+  EXPECT_THROW(write_vtu(temporary("pumpd_vtu_test_bad.vtu"), grid), std::logic_error);
+  grid.cell_data = {{"none", 0, {}}};
+  EXPECT_THROW(write_vtu(temporary("pumpd_vtu_test_bad.vtu"), grid), std::logic_error);
+  EXPECT_FALSE(std::filesystem::exists(temporary("pumpd_vtu_test_bad.vtu")));
+}
+
+// RFC 4648's test vectors: "f", "fo", "foo" as cell types (one byte each) of one, two and three
+// vertex cells.
+TEST(Vtu, Base64AsRfc4648)
+{
+  for (const auto &[text, expected] : std::vector<std::pair<std::string, std::string>>{
+         {"f", "Zg=="}, {"fo", "Zm8="}, {"foo", "Zm9v"}, {"foob", "Zm9vYg=="}, {"fooba", "Zm9vYmE="}})
+    {
+      VtuGrid grid;
+      for (char c : text)
+        {
+          grid.points.insert(grid.points.end(), {0., 0.});
+          grid.add_cell(std::int64_t(grid.n_points() - 1), 1, std::uint8_t(c));
+        }
+      write_vtu(temporary("pumpd_vtu_test_rfc.vtu"), grid);
+      arrays(temporary("pumpd_vtu_test_rfc.vtu"));
+      EXPECT_EQ(encoded.at("types"), expected) << text;
+    }
 }

@@ -98,7 +98,7 @@ namespace
 //       within 1e-9 m and K_I / sqrt(E' G_c) at every step equal to 1e-10 relative (no loss of
 //       digits in K_I);
 //     - the coupled cycle, first 2 exchanges: the first exchange (same crack) with the same
-//       decision and load factor and K_I / K_c equal to 1e-10 relative; its tip within one PD
+//       decision, its load factor equal to 1e-12 and K_I / K_c to 1e-10 relative; its tip within one PD
 //       spacing h of the E = 2.4e9 run's; the second exchange's crack (differing by < h) with
 //       K_I per unit load over K_c within 2 % and its load factor within one load increment.
 //       The PD part is not bitwise scale invariant: a last-bit difference in the boundary
