@@ -106,8 +106,8 @@ namespace
 //       (iteration counts differ by ~10 % from the first state on), and the extracted tip moves
 //       by a small part of a spacing. Such a difference can carry an advance across the
 //       controller's minimum advance: the second exchange may grow past it at one load increment
-//       below the reference's (4.07 instead of 3.65 mm at 1.25 P_c). That is a different
-//       discrete decision, not lost digits, so later exchanges are not compared.
+//       below the reference's. That is a different discrete decision, not lost digits, so later
+//       exchanges are not compared.
 // "Model only what a scene requires", from the same E = 2.4e9 run: the printed
 // scene.enriched_dof_fraction and scene.pd_nodes_over_fullpd_nodes lie in (0, 0.25).
 namespace
