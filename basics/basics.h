@@ -10,6 +10,7 @@
 //   pvd.h       the ParaView series index (.pvd)
 //   vtu.h       the VTU writer (unstructured grids, arrays as base64 binary)
 //   text.h      a file's bytes, trim
+//   hash.h      content hashes (FNV-1a) and their hex text
 //   program.h   another program run as a child process: exit status, wall time, peak memory
 #pragma once
 
@@ -18,6 +19,7 @@
 #include "csv.h"
 #include "error.h"
 #include "geometry.h"
+#include "hash.h"
 #include "lefm.h"
 #include "program.h"
 #include "pvd.h"

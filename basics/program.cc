@@ -1,5 +1,6 @@
 #include "program.h"
 
+#include <elf.h>
 #include <fcntl.h>
 #include <spawn.h>
 #include <sys/resource.h>
@@ -12,6 +13,9 @@
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
+
+#include "hash.h"
+#include "text.h"
 
 extern char **environ;
 
@@ -66,4 +70,64 @@ namespace pumpd
   }
 
   std::string this_executable() { return std::filesystem::read_symlink("/proc/self/exe").string(); }
+
+  namespace
+  {
+    /// The GNU build ID of a 64-bit ELF file (its NT_GNU_BUILD_ID note, found through the program
+    /// headers' PT_NOTE segments), in hex; "" if it has none.
+    std::string gnu_build_id(const std::string &file)
+    {
+      std::ifstream in(file, std::ios::binary);
+      Elf64_Ehdr    header{};
+      const auto    read_at = [&](std::uint64_t offset, void *to, std::size_t bytes) {
+        in.seekg(static_cast<std::streamoff>(offset));
+        return static_cast<bool>(in.read(static_cast<char *>(to), static_cast<std::streamsize>(bytes)));
+      };
+      if (!read_at(0, &header, sizeof header) || std::memcmp(header.e_ident, ELFMAG, SELFMAG) != 0 ||
+          header.e_ident[EI_CLASS] != ELFCLASS64 || header.e_phentsize != sizeof(Elf64_Phdr))
+        return "";
+      for (unsigned int i = 0; i < header.e_phnum; ++i)
+        {
+          Elf64_Phdr segment{};
+          if (!read_at(header.e_phoff + i * sizeof segment, &segment, sizeof segment))
+            return "";
+          if (segment.p_type != PT_NOTE || segment.p_filesz > (1u << 16))
+            continue;
+          std::string notes(segment.p_filesz, '\0');
+          if (!read_at(segment.p_offset, notes.data(), notes.size()))
+            return "";
+          // Each note: its header, then its name and its description, each padded to 4 bytes.
+          const auto padded = [](std::uint64_t n) { return (n + 3) / 4 * 4; };
+          for (std::uint64_t at = 0; at + sizeof(Elf64_Nhdr) <= notes.size();)
+            {
+              Elf64_Nhdr note;
+              std::memcpy(&note, notes.data() + at, sizeof note);
+              const std::uint64_t name = at + sizeof note, description = name + padded(note.n_namesz);
+              if (description + note.n_descsz > notes.size())
+                break;
+              if (note.n_type == NT_GNU_BUILD_ID && note.n_namesz == 4 && notes.compare(name, 4, std::string("GNU\0", 4)) == 0)
+                {
+                  const char *digits = "0123456789abcdef";
+                  std::string id;
+                  for (std::uint64_t k = 0; k < note.n_descsz; ++k)
+                    {
+                      const auto byte = static_cast<unsigned char>(notes[description + k]);
+                      id += {digits[byte >> 4], digits[byte & 15]};
+                    }
+                  return id;
+                }
+              at = description + padded(note.n_descsz);
+            }
+        }
+      return "";
+    }
+  } // namespace
+
+  std::string program_version(const std::string &executable)
+  {
+    if (const std::string id = gnu_build_id(executable); !id.empty())
+      return id;
+    const auto bytes = file_contents(executable);
+    return bytes ? hex(fnv1a(*bytes)) : "";
+  }
 } // namespace pumpd

@@ -27,4 +27,9 @@ namespace pumpd
 
   /// The path of the running executable (/proc/self/exe resolved).
   std::string this_executable();
+
+  /// What tells two builds of a program apart: the GNU build ID of an ELF executable (the
+  /// linker's hash of its content, read from its notes without reading the whole file), else
+  /// FNV-1a (basics/hash.h) of its bytes; in hex, "" if it cannot be read.
+  std::string program_version(const std::string &executable);
 } // namespace pumpd

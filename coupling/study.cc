@@ -12,6 +12,8 @@
 #include <ostream>
 #include <sstream>
 
+#include <stdlib.h>
+
 #include "error.h"
 #include "parameters.h"
 #include "program.h"
@@ -200,6 +202,15 @@ namespace pumpd::coupling
       out << std::flush;
     }
 
+    /// The scene, its .geo meshed once for the study and its runs: the mesh cache
+    /// (PUMPD_MESH_CACHE, global/mesh.h), unless the user set one, is the study's meshes/, and the
+    /// runs inherit it.
+    Scene build_scene_through_cache(const SceneSettings &settings, const std::string &directory)
+    {
+      ::setenv("PUMPD_MESH_CACHE", (directory + "/meshes").c_str(), 0);
+      return build_scene(settings);
+    }
+
     /// A study under way: the scene, the runs planned, those recorded; each planned run taken in
     /// turn (reused, skipped or run), with its progress lines.
     class Study
@@ -208,11 +219,11 @@ namespace pumpd::coupling
       /// Reads the scene file and plans the runs: every check before any run.
       Study(const std::string &scene_file, const std::string &executable, std::ostream &out)
         : parameters(read_parameters(scene_file))
-        , scene(build_scene(parameters.scene))
         , directory(parameters.study.output_directory.empty() ? parameters.scene.output_directory + "/study"
                                                               : parameters.study.output_directory)
+        , scene(build_scene_through_cache(parameters.scene, directory))
         , executable(executable)
-        , version(file_hash(executable))
+        , version(program_version(executable))
         , plan(plan_runs(scene_file, scene, parameters.study, directory, version))
         , runs(directory)
         , out(out)
@@ -297,8 +308,9 @@ namespace pumpd::coupling
 
       const Clock::time_point       t0 = Clock::now();
       const Parameters              parameters;
+      const std::string             directory;
       const Scene                   scene;
-      const std::string             directory, executable, version;
+      const std::string             executable, version;
       const std::vector<PlannedRun> plan;
       Runs                          runs;
       std::ostream                 &out;

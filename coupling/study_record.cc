@@ -1,12 +1,10 @@
 #include "study_record.h"
 
-#include <cstdint>
-#include <cstring>
 #include <fstream>
-#include <iomanip>
 #include <sstream>
 
 #include "csv.h"
+#include "hash.h"
 #include "text.h"
 
 namespace pumpd::coupling
@@ -14,37 +12,7 @@ namespace pumpd::coupling
   namespace
   {
     const char *header = "run,key,method,status,wall_s,peak_mib,pd_node_steps,global_dofs,pd_seconds";
-
-    /// FNV-1a over 8-byte words (the tail byte by byte): a change of any byte changes the hash
-    /// but for chance collisions, at a word per multiplication (an executable of tens of MB).
-    std::uint64_t fnv1a(const std::string &bytes, std::uint64_t h = 14695981039346656037ull)
-    {
-      const std::uint64_t prime = 1099511628211ull;
-      std::size_t         i     = 0;
-      for (; i + 8 <= bytes.size(); i += 8)
-        {
-          std::uint64_t word;
-          std::memcpy(&word, bytes.data() + i, 8);
-          h = (h ^ word) * prime;
-        }
-      for (; i < bytes.size(); ++i)
-        h = (h ^ static_cast<unsigned char>(bytes[i])) * prime;
-      return h;
-    }
-
-    std::string hex(std::uint64_t h)
-    {
-      std::ostringstream s;
-      s << std::hex << std::setw(16) << std::setfill('0') << h;
-      return s.str();
-    }
   } // namespace
-
-  std::string file_hash(const std::string &file)
-  {
-    const auto bytes = file_contents(file);
-    return bytes ? hex(fnv1a(*bytes)) : "";
-  }
 
   std::string run_key(const std::string &program_version, const std::string &scene_text, const std::string &mesh_file)
   {

@@ -15,11 +15,16 @@
 #include <iomanip>
 #include <limits>
 #include <map>
+#include <regex>
 #include <set>
 #include <sstream>
 
+#include <unistd.h>
+
 #include "error.h"
+#include "hash.h"
 #include "program.h"
+#include "text.h"
 
 namespace pumpd::global
 {
@@ -63,13 +68,19 @@ namespace pumpd::global
       return one_line(last_line(log));
     }
 
+    /// The gmsh command: the environment variable PUMPD_GMSH, else `gmsh` on the PATH.
+    std::string gmsh_command()
+    {
+      const char *from_env = std::getenv("PUMPD_GMSH");
+      return (from_env != nullptr && *from_env != '\0') ? from_env : "gmsh";
+    }
+
     /// Runs gmsh on a .geo file with `mode` ("-2": mesh in 2D, msh2; "-0": the unrolled
     /// geometry) into `out`, its output into `log`.
     void run_gmsh(const std::string &file, const std::string &mode, double characteristic_length,
                   const fs::path &out, const fs::path &log)
     {
-      const char       *from_env = std::getenv("PUMPD_GMSH");
-      const std::string gmsh     = (from_env != nullptr && *from_env != '\0') ? from_env : "gmsh";
+      const std::string gmsh = gmsh_command();
 
       std::vector<std::string> args = {gmsh, mode};
       if (mode == "-2")
@@ -99,6 +110,51 @@ namespace pumpd::global
       if (!fs::is_regular_file(out))
         throw InvalidParameter("Mesh file", file,
                                "gmsh (exit status 0) wrote nothing: " + gmsh_message(log));
+    }
+
+    /// The text of a .geo and of the files it reads (Include, Merge), recursively, chained into
+    /// `h`; a file that cannot be read adds its name.
+    std::uint64_t geo_sources_hash(const fs::path &file, std::uint64_t h, std::set<fs::path> &seen)
+    {
+      if (!seen.insert(fs::weakly_canonical(file)).second)
+        return h;
+      const auto text = file_contents(file.string());
+      h               = fnv1a(text.value_or(file.string()), h);
+      if (!text)
+        return h;
+      static const std::regex read_file(R"re(\b(Include|Merge)\s*"([^"]+)")re");
+      for (std::sregex_iterator m(text->begin(), text->end(), read_file), end; m != end; ++m)
+        {
+          const fs::path named = (*m)[2].str();
+          h = geo_sources_hash(named.is_absolute() ? named : file.parent_path() / named, h, seen);
+        }
+      return h;
+    }
+
+    /// Where a .geo meshed at `characteristic_length` is kept between runs: a file in the
+    /// directory named by the environment variable PUMPD_MESH_CACHE (pumpd --study sets it to its
+    /// output directory's meshes/), named by the hash of the .geo's sources, the size and the gmsh
+    /// command; empty without a cache.
+    fs::path cached_mesh(const std::string &file, double characteristic_length)
+    {
+      const char *directory = std::getenv("PUMPD_MESH_CACHE");
+      if (directory == nullptr || *directory == '\0')
+        return {};
+      std::set<fs::path> seen;
+      const auto         h = geo_sources_hash(file, fnv1a(to_text(characteristic_length, 17), fnv1a(gmsh_command())), seen);
+      return fs::path(directory) / (hex(h) + ".msh");
+    }
+
+    /// Copies a mesh into the cache: written aside, then renamed, so that a run reading the cache
+    /// sees a whole file or none. A cache that cannot be written is left as it is.
+    void keep_in_cache(const fs::path &msh, const fs::path &cached)
+    {
+      std::error_code ignored;
+      fs::create_directories(cached.parent_path(), ignored);
+      const fs::path part = cached.string() + ".part" + std::to_string(::getpid());
+      if (fs::copy_file(msh, part, fs::copy_options::overwrite_existing, ignored))
+        fs::rename(part, cached, ignored);
+      fs::remove(part, ignored);
     }
 
     /// Cells a .geo would be meshed into, before meshing: the area of the bounding box of its
@@ -284,13 +340,24 @@ namespace pumpd::global
       }
     else if (extension == ".geo")
       {
-        const TemporaryDirectory directory;
-        too_many(estimated_cells(file, characteristic_length, directory.path()),
-                 "the mesh would have about (bounding box / size^2)");
-        const fs::path msh = directory.path() / "mesh.msh";
-        run_gmsh(file, "-2", characteristic_length, msh, directory.path() / "gmsh.log");
-        read_msh(msh, file, tria);
-        names = read_names(msh, file);
+        const fs::path cached = cached_mesh(file, characteristic_length);
+        if (!cached.empty() && fs::is_regular_file(cached, error))
+          {
+            read_msh(cached, file, tria);
+            names = read_names(cached, file);
+          }
+        else
+          {
+            const TemporaryDirectory directory;
+            too_many(estimated_cells(file, characteristic_length, directory.path()),
+                     "the mesh would have about (bounding box / size^2)");
+            const fs::path msh = directory.path() / "mesh.msh";
+            run_gmsh(file, "-2", characteristic_length, msh, directory.path() / "gmsh.log");
+            read_msh(msh, file, tria);
+            names = read_names(msh, file);
+            if (!cached.empty())
+              keep_in_cache(msh, cached);
+          }
       }
     else
       throw InvalidParameter("Mesh file", file, "must be a gmsh .msh or .geo file");

@@ -39,7 +39,10 @@ namespace pumpd::global
   /// - `*.geo` is first meshed in 2D by the gmsh executable (the one named by the environment
   ///   variable PUMPD_GMSH, else `gmsh` on the PATH) into a temporary msh2 file; when
   ///   `characteristic_length` > 0 it is passed as `-setnumber h <characteristic_length>`
-  ///   (meshes/*.geo: quad edge length in m). Ignored for `.msh`.
+  ///   (meshes/*.geo: quad edge length in m). Ignored for `.msh`. When the environment variable
+  ///   PUMPD_MESH_CACHE names a directory, the mesh is kept there and read back, without gmsh,
+  ///   by a later run that meshes the same .geo (its text and the files it Includes or Merges)
+  ///   at the same size with the same gmsh command.
   /// With max_cells > 0, a .geo whose estimated cell count (bounding box area / h^2, from gmsh's
   /// unrolled geometry, before meshing) or a mesh whose cell count exceeds it is refused.
   /// Throws InvalidParameter: "Mesh file" (missing, unknown extension, unreadable, cells that

@@ -1,5 +1,5 @@
 // run_program: exit status, signal, a program that cannot start, its output in the log, stdin
-// from /dev/null; last_line.
+// from /dev/null; last_line; program_version (the build ID, else the bytes).
 #include <gtest/gtest.h>
 
 #include <cerrno>
@@ -53,4 +53,25 @@ TEST(LastLine, NoneInAnEmptyFile)
   std::ofstream(log_file) << " \n\t\n";
   EXPECT_EQ(pumpd::last_line(log_file), "");
   EXPECT_EQ(pumpd::last_line("/no/such/file"), "");
+}
+
+TEST(ProgramVersion, TheBuildIdOfAnElfExecutable)
+{
+  const std::string self = pumpd::this_executable();
+  const auto        run  = pumpd::run_program({"sh", "-c", "readelf -n '" + self + "' | sed -n 's/.*Build ID: //p'"}, log_file);
+  ASSERT_EQ(run.exit_code, 0);
+  const std::string build_id = pumpd::last_line(log_file);
+  ASSERT_EQ(build_id.size(), 40u) << "this test program has no SHA-1 build ID";
+  EXPECT_EQ(pumpd::program_version(self), build_id);
+}
+
+TEST(ProgramVersion, TheBytesOfAnyOtherFile)
+{
+  std::ofstream(log_file) << "#!/bin/sh\necho version 1\n";
+  const std::string first = pumpd::program_version(log_file);
+  EXPECT_EQ(first.size(), 16u);
+  EXPECT_EQ(pumpd::program_version(log_file), first);
+  std::ofstream(log_file) << "#!/bin/sh\necho version 2\n";
+  EXPECT_NE(pumpd::program_version(log_file), first);
+  EXPECT_EQ(pumpd::program_version("/no/such/program"), "");
 }

@@ -1,7 +1,7 @@
 // The Ingraffea beam meshes (meshes/*.geo) and their reader (global/mesh.h): all-quad
 // triangulations of the right area, the physical names (edges, holes, the supports and the load
 // point), the body they cover (straight outline, circular holes), the size override and its
-// cell limit, and the errors the reader raises.
+// cell limit, the mesh cache, and the errors the reader raises.
 #include <deal.II/grid/reference_cell.h>
 #include <deal.II/grid/tria.h>
 
@@ -14,6 +14,7 @@
 #include <fstream>
 #include <functional>
 #include <map>
+#include <optional>
 #include <set>
 #include <string>
 
@@ -306,4 +307,79 @@ TEST(GlobalMesh, GmshErrors)
     ::unsetenv("PUMPD_GMSH");
   EXPECT_TRUE(starts_with(what, "Mesh file = " + beam_geo + ": ")) << what;
   EXPECT_NE(what.find("/nonexistent/gmsh"), std::string::npos) << what;
+}
+
+namespace
+{
+  /// An environment variable set for the life of the object, then restored.
+  class ScopedVariable
+  {
+  public:
+    ScopedVariable(const char *name, const std::string &value)
+      : name(name)
+    {
+      if (const char *old = std::getenv(name))
+        saved = old;
+      ::setenv(name, value.c_str(), 1);
+    }
+    ~ScopedVariable()
+    {
+      if (saved)
+        ::setenv(name, saved->c_str(), 1);
+      else
+        ::unsetenv(name);
+    }
+
+  private:
+    const char                *name;
+    std::optional<std::string> saved;
+  };
+} // namespace
+
+TEST(GlobalMesh, CacheKeepsAMeshedGeoUntilItsSourcesOrSizeChange)
+{
+  namespace fs = std::filesystem;
+  // The beam, through a .geo that Includes it, meshed by a gmsh that counts its runs.
+  const TemporaryFile top("beam.geo", "Include \"body.geo\";\n");
+  const fs::path      directory = fs::path(top.path()).parent_path();
+  fs::copy_file(beam_geo, directory / "body.geo");
+  const char       *gmsh = std::getenv("PUMPD_GMSH");
+  const std::string real = gmsh != nullptr && *gmsh != '\0' ? gmsh : "gmsh";
+  std::ofstream(directory / "gmsh") << "#!/bin/sh\necho run >> '" << (directory / "runs").string() << "'\nexec '"
+                                    << real << "' \"$@\"\n";
+  fs::permissions(directory / "gmsh", fs::perms::owner_all);
+  const ScopedVariable counting("PUMPD_GMSH", (directory / "gmsh").string());
+  const ScopedVariable cache("PUMPD_MESH_CACHE", (directory / "meshes").string());
+  const auto           runs = [&] {
+    std::ifstream in(directory / "runs");
+    int           n = 0;
+    for (std::string line; std::getline(in, line);)
+      ++n;
+    return n;
+  };
+
+  dealii::Triangulation<2> meshed, cached;
+  const MeshNames          meshed_names = read_mesh(top.path(), meshed, 0.02);
+  EXPECT_EQ(runs(), 2) << "the cell estimate (gmsh -0) and the mesh (gmsh -2)";
+  const MeshNames cached_names = read_mesh(top.path(), cached, 0.02);
+  EXPECT_EQ(runs(), 2) << "read from the cache";
+  ASSERT_EQ(cached.n_active_cells(), meshed.n_active_cells());
+  EXPECT_EQ(cached.get_vertices(), meshed.get_vertices());
+  EXPECT_EQ(cached_names.boundaries, meshed_names.boundaries);
+  ASSERT_EQ(cached_names.points.size(), meshed_names.points.size());
+  for (const auto &[name, points] : meshed_names.points)
+    {
+      ASSERT_EQ(cached_names.points.at(name).size(), points.size()) << name;
+      for (std::size_t i = 0; i < points.size(); ++i)
+        EXPECT_TRUE(cached_names.points.at(name)[i].x == points[i].x && cached_names.points.at(name)[i].y == points[i].y)
+          << name;
+    }
+
+  read_mesh(top.path(), cached, 0.025);
+  EXPECT_EQ(runs(), 4) << "another size";
+  std::ofstream(directory / "body.geo", std::ios::app) << "// an edit of the included file\n";
+  read_mesh(top.path(), cached, 0.02);
+  EXPECT_EQ(runs(), 6) << "an included file changed";
+  read_mesh(top.path(), cached, 0.02);
+  EXPECT_EQ(runs(), 6);
 }
