@@ -11,8 +11,8 @@ namespace pumpd
   constexpr std::uint64_t fnv1a_offset = 14695981039346656037ull;
 
   /// FNV-1a over 8-byte words (the tail byte by byte), continuing from `seed`: a change of any
-  /// byte changes the hash but for chance collisions, at a word per multiplication (an
-  /// executable of tens of MB).
+  /// byte changes the hash but for chance collisions, at a word per multiplication (fast on
+  /// files of tens of MB).
   std::uint64_t fnv1a(const std::string &bytes, std::uint64_t seed = fnv1a_offset);
 
   /// `h` as 16 hex digits.

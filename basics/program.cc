@@ -84,20 +84,24 @@ namespace pumpd
         return static_cast<bool>(in.read(static_cast<char *>(to), static_cast<std::streamsize>(bytes)));
       };
       if (!read_at(0, &header, sizeof header) || std::memcmp(header.e_ident, ELFMAG, SELFMAG) != 0 ||
-          header.e_ident[EI_CLASS] != ELFCLASS64 || header.e_phentsize != sizeof(Elf64_Phdr))
+          header.e_ident[EI_CLASS] != ELFCLASS64 || header.e_ident[EI_DATA] != ELFDATA2LSB ||
+          header.e_phentsize != sizeof(Elf64_Phdr))
         return "";
+      constexpr std::uint64_t largest_note_segment = 1u << 16;
       for (unsigned int i = 0; i < header.e_phnum; ++i)
         {
           Elf64_Phdr segment{};
           if (!read_at(header.e_phoff + i * sizeof segment, &segment, sizeof segment))
             return "";
-          if (segment.p_type != PT_NOTE || segment.p_filesz > (1u << 16))
+          if (segment.p_type != PT_NOTE || segment.p_filesz > largest_note_segment)
             continue;
           std::string notes(segment.p_filesz, '\0');
           if (!read_at(segment.p_offset, notes.data(), notes.size()))
             return "";
-          // Each note: its header, then its name and its description, each padded to 4 bytes.
-          const auto padded = [](std::uint64_t n) { return (n + 3) / 4 * 4; };
+          // Each note: its header, then its name and its description, each padded to the
+          // segment's alignment (4 bytes, or 8 in an 8-aligned note segment).
+          const std::uint64_t align  = segment.p_align == 8 ? 8 : 4;
+          const auto          padded = [&](std::uint64_t n) { return (n + align - 1) / align * align; };
           for (std::uint64_t at = 0; at + sizeof(Elf64_Nhdr) <= notes.size();)
             {
               Elf64_Nhdr note;

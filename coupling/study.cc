@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -11,8 +12,6 @@
 #include <map>
 #include <ostream>
 #include <sstream>
-
-#include <stdlib.h>
 
 #include "error.h"
 #include "parameters.h"

@@ -5,6 +5,7 @@
 
 #include "csv.h"
 #include "hash.h"
+#include "mesh.h"
 #include "text.h"
 
 namespace pumpd::coupling
@@ -16,7 +17,9 @@ namespace pumpd::coupling
 
   std::string run_key(const std::string &program_version, const std::string &scene_text, const std::string &mesh_file)
   {
-    return hex(fnv1a(file_contents(mesh_file).value_or(""), fnv1a(scene_text, fnv1a(program_version))));
+    const std::string sources = global::mesh_sources_hash(mesh_file);
+    return hex(fnv1a(sources.empty() ? file_contents(mesh_file).value_or("") : sources,
+                     fnv1a(scene_text, fnv1a(program_version))));
   }
 
   std::map<std::string, double> read_metrics(const std::string &log)

@@ -1,7 +1,8 @@
 // The record of a study's finished runs (runs.csv in its output directory, a row appended as soon
 // as a run ends), and what makes a run the same as a recorded one: its key, a hash of the program
-// version, the run's scene file and the mesh file it names. The program version is the pumpd
-// executable's build ID (basics/program.h): any rebuild that changes the program runs everything again.
+// version, the run's scene file and the sources of the mesh file it names. The program version
+// is the pumpd executable's build ID (basics/program.h): any rebuild that changes the program
+// runs everything again.
 #pragma once
 
 #include <map>
@@ -20,7 +21,8 @@ namespace pumpd::coupling
     bool ok() const { return status == "ok"; }
   };
 
-  /// The key of a run: FNV-1a of the program version, its scene file text and its mesh file.
+  /// The key of a run: FNV-1a of the program version, its scene file text and its mesh file's
+  /// sources (global::mesh_sources_hash; the file's own bytes where those are unknown).
   std::string run_key(const std::string &program_version, const std::string &scene_text, const std::string &mesh_file);
 
   /// The `pumpd-metric <name> <value>` lines of a run's log.

@@ -15,6 +15,7 @@
 #include <iomanip>
 #include <limits>
 #include <map>
+#include <optional>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -75,18 +76,24 @@ namespace pumpd::global
       return (from_env != nullptr && *from_env != '\0') ? from_env : "gmsh";
     }
 
-    /// Runs gmsh on a .geo file with `mode` ("-2": mesh in 2D, msh2; "-0": the unrolled
-    /// geometry) into `out`, its output into `log`.
-    void run_gmsh(const std::string &file, const std::string &mode, double characteristic_length,
-                  const fs::path &out, const fs::path &log)
+    /// gmsh's command line for `mode` ("-2": mesh in 2D, msh2; "-0": the unrolled geometry) at
+    /// `characteristic_length`, without the output and the .geo file.
+    std::vector<std::string> gmsh_arguments(const std::string &mode, double characteristic_length)
     {
-      const std::string gmsh = gmsh_command();
-
-      std::vector<std::string> args = {gmsh, mode};
+      std::vector<std::string> args = {gmsh_command(), mode};
       if (mode == "-2")
         args.insert(args.end(), {"-format", "msh2"});
       if (characteristic_length > 0.)
         args.insert(args.end(), {"-setnumber", "h", to_text(characteristic_length, 17)});
+      return args;
+    }
+
+    /// Runs gmsh on a .geo file in `mode` (gmsh_arguments) into `out`, its output into `log`.
+    void run_gmsh(const std::string &file, const std::string &mode, double characteristic_length,
+                  const fs::path &out, const fs::path &log)
+    {
+      std::vector<std::string> args = gmsh_arguments(mode, characteristic_length);
+      const std::string        gmsh = args.front();
       args.insert(args.end(), {"-o", out.string(), file});
       const ProgramRun run = run_program(args, log.string());
       if (run.start_error != 0)
@@ -112,46 +119,86 @@ namespace pumpd::global
                                "gmsh (exit status 0) wrote nothing: " + gmsh_message(log));
     }
 
-    /// The text of a .geo and of the files it reads (Include, Merge), recursively, chained into
-    /// `h`; a file that cannot be read adds its name.
-    std::uint64_t geo_sources_hash(const fs::path &file, std::uint64_t h, std::set<fs::path> &seen)
+    /// The program a command names: as it is with a '/', else the first executable of that name
+    /// in the PATH's directories; empty if there is none.
+    fs::path program_of(const std::string &command)
     {
-      if (!seen.insert(fs::weakly_canonical(file)).second)
+      if (command.find('/') != std::string::npos)
+        return command;
+      const char        *path = std::getenv("PATH");
+      std::istringstream directories(path != nullptr ? path : "");
+      for (std::string directory; std::getline(directories, directory, ':');)
+        {
+          const fs::path candidate = fs::path(directory.empty() ? "." : directory) / command;
+          if (::access(candidate.c_str(), X_OK) == 0 && fs::is_regular_file(candidate))
+            return candidate;
+        }
+      return {};
+    }
+
+    /// Chains the sources of a mesh file into `h`: a .geo's text, the option file gmsh merges
+    /// with it (<file>.opt), and the files it reads (Include, Merge, ShapeFromFile), recursively;
+    /// any other file's bytes. None if a .geo names a file it reads by an expression (StrCat,
+    /// ...): its sources are then unknown.
+    std::optional<std::uint64_t> chain_sources(const fs::path &file, std::uint64_t h, std::set<fs::path> &seen)
+    {
+      std::error_code error;
+      const fs::path  canonical = fs::weakly_canonical(file, error);
+      if (!seen.insert(error ? file : canonical).second)
         return h;
       const auto text = file_contents(file.string());
-      h               = fnv1a(text.value_or(file.string()), h);
-      if (!text)
+      h               = fnv1a(text.value_or("missing " + file.string()), h);
+      if (const auto options = file_contents(file.string() + ".opt"))
+        h = fnv1a(*options, h);
+      std::string extension = file.extension().string();
+      std::transform(extension.begin(), extension.end(), extension.begin(),
+                     [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+      if (!text || extension != ".geo")
         return h;
-      static const std::regex read_file(R"re(\b(Include|Merge)\s*"([^"]+)")re");
-      for (std::sregex_iterator m(text->begin(), text->end(), read_file), end; m != end; ++m)
+      static const std::regex reads(R"re(\b(Include|Merge|ShapeFromFile)\b\s*\(?\s*("([^"]*)")?)re");
+      for (std::sregex_iterator m(text->begin(), text->end(), reads), end; m != end; ++m)
         {
-          const fs::path named = (*m)[2].str();
-          h = geo_sources_hash(named.is_absolute() ? named : file.parent_path() / named, h, seen);
+          if (!(*m)[2].matched)
+            return std::nullopt;
+          const fs::path named   = (*m)[3].str();
+          const auto     chained = chain_sources(named.is_absolute() ? named : file.parent_path() / named, h, seen);
+          if (!chained)
+            return std::nullopt;
+          h = *chained;
         }
       return h;
     }
 
     /// Where a .geo meshed at `characteristic_length` is kept between runs: a file in the
     /// directory named by the environment variable PUMPD_MESH_CACHE (pumpd --study sets it to its
-    /// output directory's meshes/), named by the hash of the .geo's sources, the size and the gmsh
-    /// command; empty without a cache.
+    /// output directory's meshes/), named by the hash of the .geo's sources, gmsh's command line
+    /// and gmsh's program version; empty without a cache, or where the sources or gmsh are unknown.
     fs::path cached_mesh(const std::string &file, double characteristic_length)
     {
       const char *directory = std::getenv("PUMPD_MESH_CACHE");
-      if (directory == nullptr || *directory == '\0')
+      const auto  gmsh      = program_of(gmsh_command());
+      if (directory == nullptr || *directory == '\0' || gmsh.empty())
         return {};
+      std::uint64_t h = fnv1a(program_version(gmsh.string()));
+      for (const auto &argument : gmsh_arguments("-2", characteristic_length))
+        h = fnv1a(argument + '\0', h);
       std::set<fs::path> seen;
-      const auto         h = geo_sources_hash(file, fnv1a(to_text(characteristic_length, 17), fnv1a(gmsh_command())), seen);
-      return fs::path(directory) / (hex(h) + ".msh");
+      const auto         sources = chain_sources(file, h, seen);
+      return sources ? fs::path(directory) / (hex(*sources) + ".msh") : fs::path();
     }
 
-    /// Copies a mesh into the cache: written aside, then renamed, so that a run reading the cache
-    /// sees a whole file or none. A cache that cannot be written is left as it is.
+    /// Copies a mesh into the cache: written aside under a unique name, then renamed, so that a
+    /// run reading the cache sees a whole file or none. A cache that cannot be written is left as
+    /// it is.
     void keep_in_cache(const fs::path &msh, const fs::path &cached)
     {
       std::error_code ignored;
       fs::create_directories(cached.parent_path(), ignored);
-      const fs::path part = cached.string() + ".part" + std::to_string(::getpid());
+      std::string part = cached.string() + ".XXXXXX";
+      const int   fd   = ::mkstemp(part.data());
+      if (fd < 0)
+        return;
+      ::close(fd);
       if (fs::copy_file(msh, part, fs::copy_options::overwrite_existing, ignored))
         fs::rename(part, cached, ignored);
       fs::remove(part, ignored);
@@ -308,6 +355,26 @@ namespace pumpd::global
                                    " cells are not quadrilaterals (recombine the mesh in gmsh)");
         }
     }
+
+    /// Reads the cached mesh `cached` of `file`: false if there is none, or if it cannot be read
+    /// (it is then removed, and the caller meshes the .geo again).
+    bool read_cached(const fs::path &cached, const std::string &file, dealii::Triangulation<2> &tria, MeshNames &names)
+    {
+      std::error_code error;
+      if (cached.empty() || !fs::is_regular_file(cached, error))
+        return false;
+      try
+        {
+          read_msh(cached, file, tria);
+          names = read_names(cached, file);
+          return true;
+        }
+      catch (const InvalidParameter &)
+        {
+          fs::remove(cached, error);
+          return false;
+        }
+    }
   } // namespace
 
   MeshNames read_mesh(const std::string &file, dealii::Triangulation<2> &tria, double characteristic_length,
@@ -341,12 +408,7 @@ namespace pumpd::global
     else if (extension == ".geo")
       {
         const fs::path cached = cached_mesh(file, characteristic_length);
-        if (!cached.empty() && fs::is_regular_file(cached, error))
-          {
-            read_msh(cached, file, tria);
-            names = read_names(cached, file);
-          }
-        else
+        if (!read_cached(cached, file, tria, names))
           {
             const TemporaryDirectory directory;
             too_many(estimated_cells(file, characteristic_length, directory.path()),
@@ -376,6 +438,13 @@ namespace pumpd::global
         if (face->at_boundary())
           edges.push_back({face->vertex_index(0), face->vertex_index(1)});
     return geometry::body_from_edges(vertices, edges);
+  }
+
+  std::string mesh_sources_hash(const std::string &file)
+  {
+    std::set<fs::path> seen;
+    const auto         h = chain_sources(file, fnv1a_offset, seen);
+    return h ? hex(*h) : "";
   }
 
 } // namespace pumpd::global

@@ -41,15 +41,21 @@ namespace pumpd::global
   ///   `characteristic_length` > 0 it is passed as `-setnumber h <characteristic_length>`
   ///   (meshes/*.geo: quad edge length in m). Ignored for `.msh`. When the environment variable
   ///   PUMPD_MESH_CACHE names a directory, the mesh is kept there and read back, without gmsh,
-  ///   by a later run that meshes the same .geo (its text and the files it Includes or Merges)
-  ///   at the same size with the same gmsh command.
+  ///   by a later run that meshes the same sources (mesh_sources_hash) at the same size with the
+  ///   same gmsh program; a .geo whose sources are unknown is meshed every time.
   /// With max_cells > 0, a .geo whose estimated cell count (bounding box area / h^2, from gmsh's
-  /// unrolled geometry, before meshing) or a mesh whose cell count exceeds it is refused.
+  /// unrolled geometry, before meshing; not on a cache hit) or a mesh whose cell count exceeds
+  /// it is refused.
   /// Throws InvalidParameter: "Mesh file" (missing, unknown extension, unreadable, cells that
   /// are not quadrilaterals, gmsh not found or failing, with its exit status and first error),
   /// "Mesh size" (negative or not finite, or too many cells).
   MeshNames read_mesh(const std::string &file, dealii::Triangulation<2, 2> &tria, double characteristic_length = 0.,
                       double max_cells = 0.);
+
+  /// A hash (hex) of what a mesh file is made of: a .geo's text, the option file gmsh merges with
+  /// it (<file>.opt) and the files it reads (Include, Merge, ShapeFromFile), recursively; any
+  /// other file's bytes. Empty if a .geo names a file it reads by an expression (StrCat, ...).
+  std::string mesh_sources_hash(const std::string &file);
 
   /// The body the mesh covers: its boundary faces as closed curves (body_from_edges).
   geometry::Body body_of(const dealii::Triangulation<2, 2> &tria);

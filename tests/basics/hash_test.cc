@@ -1,6 +1,6 @@
 // fnv1a (basics/hash.h): FNV-1a's published 64-bit test vectors for inputs shorter than a word
-// (hashed byte by byte), the word-wise hash of longer inputs against a byte-wise one where the
-// input is one word, a chain through the seed, and hex.
+// (hashed byte by byte), every byte of a longer input changing the hash, a chain through the
+// seed, and hex's zero padding.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -31,4 +31,10 @@ TEST(Fnv1a, ChainsThroughItsSeed)
 {
   EXPECT_NE(pumpd::fnv1a("b", pumpd::fnv1a("a")), pumpd::fnv1a("a", pumpd::fnv1a("b")));
   EXPECT_EQ(pumpd::fnv1a("b", pumpd::fnv1a("a")), pumpd::fnv1a("ab"));
+}
+
+TEST(Hex, SixteenDigits)
+{
+  EXPECT_EQ(pumpd::hex(1), "0000000000000001");
+  EXPECT_EQ(pumpd::hex(0xfedcba9876543210ull), "fedcba9876543210");
 }

@@ -1,7 +1,7 @@
 // pumpd --study (coupling/study.h) on a coarse study of the SENT scene
 // (tests/coupling/study/sent-coarse.prm: LEFM growth, the cycle at m = 4 and at m = 3 and 5): the
-// table has every run, the recommended setting lies within the tolerance of the finest run; the
-// same study again reuses every run; a run missing from runs.csv (a study interrupted while it
+// table has every run, the recommended setting lies within the tolerance of the finest run, the
+// scene is meshed once; the same study again reuses every run and meshes nothing; a run missing from runs.csv (a study interrupted while it
 // ran) is run again, and only it.
 #include <gtest/gtest.h>
 
@@ -60,8 +60,18 @@ TEST(Study, CoarseSentStudyRecommendsWithinTheToleranceAndReusesItsRuns)
   EXPECT_EQ(recommended, 1);
   EXPECT_TRUE(std::filesystem::exists(directory + "/trade.md"));
   EXPECT_TRUE(std::filesystem::exists(directory + "/trade.png"));
+  // The study and its four runs mesh the scene once: one mesh in the study's cache.
+  const auto meshes = [] {
+    std::vector<std::pair<std::string, std::filesystem::file_time_type>> m;
+    for (const auto &entry : std::filesystem::directory_iterator(directory + "/meshes"))
+      m.emplace_back(entry.path().filename().string(), entry.last_write_time());
+    return m;
+  };
+  const auto meshed = meshes();
+  EXPECT_EQ(meshed.size(), 1u);
 
   const double second = study();
+  EXPECT_EQ(meshes(), meshed) << "the same study again meshes nothing";
   for (auto &row : pumpd::read_csv_rows(directory + "/trade.csv"))
     EXPECT_EQ(row["reused"], "yes") << row["run"];
   pumpd::test::metric("study.first_seconds", first);

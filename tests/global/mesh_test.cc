@@ -288,27 +288,6 @@ TEST(GlobalMesh, NonQuadCellsAreRejected)
   EXPECT_EQ(tria.n_active_cells(), 0u);
 }
 
-TEST(GlobalMesh, GmshErrors)
-{
-  dealii::Triangulation<2> tria;
-
-  const TemporaryFile broken("broken.geo", "Point(1) = {0, 0, 0\n");
-  std::string         what = invalid_parameter([&] { read_mesh(broken.path(), tria); });
-  EXPECT_TRUE(starts_with(what, "Mesh file = " + broken.path() + ": gmsh failed with exit status"))
-    << what;
-
-  const char *old = std::getenv("PUMPD_GMSH");
-  const std::string saved = old != nullptr ? old : "";
-  ::setenv("PUMPD_GMSH", "/nonexistent/gmsh", 1);
-  what = invalid_parameter([&] { read_mesh(beam_geo, tria); });
-  if (old != nullptr)
-    ::setenv("PUMPD_GMSH", saved.c_str(), 1);
-  else
-    ::unsetenv("PUMPD_GMSH");
-  EXPECT_TRUE(starts_with(what, "Mesh file = " + beam_geo + ": ")) << what;
-  EXPECT_NE(what.find("/nonexistent/gmsh"), std::string::npos) << what;
-}
-
 namespace
 {
   /// An environment variable set for the life of the object, then restored.
@@ -335,6 +314,23 @@ namespace
     std::optional<std::string> saved;
   };
 } // namespace
+
+TEST(GlobalMesh, GmshErrors)
+{
+  dealii::Triangulation<2> tria;
+
+  const TemporaryFile broken("broken.geo", "Point(1) = {0, 0, 0\n");
+  std::string         what = invalid_parameter([&] { read_mesh(broken.path(), tria); });
+  EXPECT_TRUE(starts_with(what, "Mesh file = " + broken.path() + ": gmsh failed with exit status"))
+    << what;
+
+  {
+    const ScopedVariable missing("PUMPD_GMSH", "/nonexistent/gmsh");
+    what = invalid_parameter([&] { read_mesh(beam_geo, tria); });
+  }
+  EXPECT_TRUE(starts_with(what, "Mesh file = " + beam_geo + ": ")) << what;
+  EXPECT_NE(what.find("/nonexistent/gmsh"), std::string::npos) << what;
+}
 
 TEST(GlobalMesh, CacheKeepsAMeshedGeoUntilItsSourcesOrSizeChange)
 {
@@ -366,6 +362,7 @@ TEST(GlobalMesh, CacheKeepsAMeshedGeoUntilItsSourcesOrSizeChange)
   ASSERT_EQ(cached.n_active_cells(), meshed.n_active_cells());
   EXPECT_EQ(cached.get_vertices(), meshed.get_vertices());
   EXPECT_EQ(cached_names.boundaries, meshed_names.boundaries);
+  EXPECT_EQ(cached_names.regions, meshed_names.regions);
   ASSERT_EQ(cached_names.points.size(), meshed_names.points.size());
   for (const auto &[name, points] : meshed_names.points)
     {
@@ -382,4 +379,17 @@ TEST(GlobalMesh, CacheKeepsAMeshedGeoUntilItsSourcesOrSizeChange)
   EXPECT_EQ(runs(), 6) << "an included file changed";
   read_mesh(top.path(), cached, 0.02);
   EXPECT_EQ(runs(), 6);
+
+  for (const auto &entry : fs::directory_iterator(directory / "meshes"))
+    std::ofstream(entry.path()) << "not a mesh\n";
+  read_mesh(top.path(), cached, 0.02);
+  EXPECT_EQ(runs(), 8) << "a cached mesh that cannot be read is meshed again";
+  EXPECT_EQ(cached.n_active_cells(), meshed.n_active_cells());
+
+  // A file named by an expression: the sources are unknown, so the .geo is meshed every time.
+  std::ofstream(top.path()) << "Include StrCat(CurrentDir, \"body.geo\");\n";
+  EXPECT_EQ(pumpd::global::mesh_sources_hash(top.path()), "");
+  read_mesh(top.path(), cached, 0.02);
+  read_mesh(top.path(), cached, 0.02);
+  EXPECT_EQ(runs(), 12);
 }
