@@ -19,11 +19,16 @@
 //    horizon shrinks against the crack (the study below prints it for delta = 4, 2, 1 mm); at this
 //    test's delta = 4 mm, m = 4 it is checked within 15 degrees and to turn the same way.
 //    A bond fails on its stretch, so the study also prints the kink against the maximum hoop
-//    strain criterion (Chang 1981, plane strain: the largest (1 - nu) sigma_tt - nu sigma_rr).
+//    strain criterion (Chang 1981, plane strain: the largest (1 - nu) sigma_tt - nu sigma_rr),
+//    and a second study turns the scene against the PD lattice (the kink's lattice dependence).
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
 #include <iostream>
+#include <iterator>
 #include <sstream>
 
 #include "global_local.h"
@@ -214,5 +219,68 @@ TEST(InclinedCrackStudy, DISABLED_KinkAgainstHorizon)
       const std::string um = std::to_string(int(std::round(delta * 1e6))) + "um";
       test::metric("cracks.inclined.kink_err_deg_delta" + um, error);
       test::metric("cracks.inclined.kink_err_vs_hoop_strain_deg_delta" + um, strain_error);
+    }
+}
+
+// Study (ctest -L study): the same first kink with the scene turned against the PD lattice (the
+// plate, its crack and its grips turned by phi = 0, 20 and -25 degrees about the centre; the
+// lattice stays axis-parallel), for delta = 4, 2, 1 mm as above: the spread of the kink over the
+// turns and both tips, cracks.inclined.kink_lattice_spread_deg_delta<delta in um>, and its mean,
+// cracks.inclined.kink_mean_deg_delta<...> (theta_c = -53.2, the hoop strain angle -49.7).
+TEST(InclinedCrackStudy, DISABLED_KinkAgainstLatticeOrientation)
+{
+  std::ifstream             in("meshes/inclined-crack.geo");
+  const std::string         geo((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string         surface = "Plane Surface(1) = {1};";
+  const auto                at      = geo.find(surface);
+  ASSERT_NE(at, std::string::npos);
+  const auto directory = std::filesystem::temp_directory_path() / "pumpd_inclined_turned";
+  std::filesystem::create_directories(directory);
+  for (const double delta : {0.004, 0.002, 0.001})
+    {
+      double lowest = 0., highest = -180., sum = 0.;
+      int    n = 0;
+      for (const double phi : {0., 20., -25.})
+        {
+          const double      c = std::cos(phi * degree), s = std::sin(phi * degree);
+          const std::string name = (directory / ("plate_" + std::to_string(int(phi)) + ".geo")).string();
+          std::ofstream(name) << geo.substr(0, at + surface.size()) << "\nRotate {{0, 0, 1}, {0, 0, 0}, "
+                              << phi * degree << "} { Surface{1}; }" << geo.substr(at + surface.size());
+          auto p                       = inclined("");
+          p.scene.mesh_file            = name;
+          const double a               = 0.00707107;
+          const Point  tip             = {a * c - a * s, a * s + a * c};
+          std::ostringstream crack, grips;
+          crack << std::setprecision(17) << -tip.x << "," << -tip.y << "; " << tip.x << "," << tip.y;
+          grips << std::setprecision(17) << "top grip: ux = " << -1e-3 * s << " * lambda, uy = " << 1e-3 * c
+                << " * lambda; bottom grip: ux = " << 1e-3 * s << " * lambda, uy = " << -1e-3 * c << " * lambda";
+          p.scene.initial_cracks       = crack.str();
+          p.scene.displacement         = grips.str();
+          p.pd.horizon                 = delta;
+          p.cycle.max_exchanges        = 1;
+          p.cycle.exchange.min_advance = delta;
+          p.cycle.exchange.max_advance = 2. * delta;
+          p.cycle.box.margin           = 2. * delta;
+          const auto         scene     = coupling::build_scene(p.scene);
+          std::ostringstream log;
+          const auto         r = coupling::run_global_local(scene, p.global_local_settings(), log);
+          for (const auto &e : r.exchanges)
+            {
+              const double kink = e.kink / degree;
+              std::cout << "delta " << delta << " m, turned " << phi << " degrees, tip end " << e.tip_end << ": "
+                        << e.decision << ", advance " << e.advance << " m, first kink " << kink << " degrees (theta_c "
+                        << e.predicted_kink / degree << ")\n";
+              if (e.decision != "accept")
+                continue;
+              lowest  = std::min(lowest, kink);
+              highest = std::max(highest, kink);
+              sum += kink;
+              ++n;
+            }
+        }
+      const std::string um = std::to_string(int(std::round(delta * 1e6))) + "um";
+      test::metric("cracks.inclined.kink_lattice_grown_tips_delta" + um, n);
+      test::metric("cracks.inclined.kink_lattice_spread_deg_delta" + um, highest - lowest);
+      test::metric("cracks.inclined.kink_mean_deg_delta" + um, sum / n);
     }
 }
