@@ -35,15 +35,15 @@ namespace
   /// that spins there holds its core while its sibling waits for one: on a machine shared with
   /// other work the PD states then take several times as long (docs/peridynamics.md). libgomp
   /// reads its waiting policy once, at start-up, so pumpd starts itself again with the passive
-  /// policy unless the user chose one. Only a process that computes a scene starts again (loading
-  /// pumpd's libraries is slow): a study's own process (its runs are processes of
-  /// their own, which inherit the policy), --help and --print-parameters only set it.
-  void wait_passively_at_barriers(char **argv, bool computes_a_scene)
+  /// policy unless the user chose one. Only a process that runs PD threads starts again (loading
+  /// deal.II's libraries takes about half a second): LEFM growth and a study's own process (its
+  /// runs are processes of their own, which inherit the policy) only set it.
+  void wait_passively_at_barriers(char **argv, bool runs_pd_threads)
   {
     if (std::getenv("OMP_WAIT_POLICY") != nullptr)
       return;
     setenv("OMP_WAIT_POLICY", "passive", 1);
-    if (computes_a_scene)
+    if (runs_pd_threads)
       execv("/proc/self/exe", argv);
   }
 } // namespace
@@ -52,7 +52,6 @@ int main(int argc, char **argv)
 {
   const std::string arg   = argc > 1 ? argv[1] : "--help";
   const bool        study = arg == "--study" && argc == 3;
-  wait_passively_at_barriers(argv, argc == 2 && arg != "--help" && arg != "-h" && arg != "--print-parameters");
   // deal.II on one thread (its assembly sums in one order: the same results on any machine).
   dealii::MultithreadInfo::set_thread_limit(1);
   if (arg == "--help" || arg == "-h" || (argc > 2 && !study))
@@ -72,10 +71,14 @@ int main(int argc, char **argv)
   try
     {
       if (study)
-        pumpd::coupling::run_study(file, pumpd::this_executable(), std::cout);
+        {
+          wait_passively_at_barriers(argv, false);
+          pumpd::coupling::run_study(file, pumpd::this_executable(), std::cout);
+        }
       else
         {
           const auto p = pumpd::coupling::read_parameters(file);
+          wait_passively_at_barriers(argv, p.method != "lefm-growth");
           // MPI (one process) for the Trilinos solver only: its start-up is slow.
           std::optional<dealii::Utilities::MPI::MPI_InitFinalize> mpi;
           if (p.global.linear_solver == "cg-amg")
