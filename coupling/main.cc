@@ -35,9 +35,9 @@ namespace
   /// that spins there holds its core while its sibling waits for one: on a machine shared with
   /// other work the PD states then take several times as long (docs/peridynamics.md). libgomp
   /// reads its waiting policy once, at start-up, so pumpd starts itself again with the passive
-  /// policy unless the user chose one. Only a process that runs PD threads starts again (loading
-  /// deal.II's libraries takes about half a second): LEFM growth and a study's own process (its
-  /// runs are processes of their own, which inherit the policy) only set it.
+  /// policy unless the user chose one. Only a process that runs PD threads starts again (it loads
+  /// deal.II's libraries again): LEFM growth runs none, and a study's own process sets the policy
+  /// for its runs, processes of their own that inherit it.
   void wait_passively_at_barriers(char **argv, bool runs_pd_threads)
   {
     if (std::getenv("OMP_WAIT_POLICY") != nullptr)
@@ -78,7 +78,8 @@ int main(int argc, char **argv)
       else
         {
           const auto p = pumpd::coupling::read_parameters(file);
-          wait_passively_at_barriers(argv, p.method != "lefm-growth");
+          if (p.method != "lefm-growth")
+            wait_passively_at_barriers(argv, true);
           // MPI (one process) for the Trilinos solver only: its start-up is slow.
           std::optional<dealii::Utilities::MPI::MPI_InitFinalize> mpi;
           if (p.global.linear_solver == "cg-amg")
