@@ -105,6 +105,20 @@ namespace
   {
     return test::scene_file("prm/inclined-crack.prm", output);
   }
+
+  /// The first exchange of scene p at horizon delta (m = 8; the advances and the box margin
+  /// scale with delta), a record per tip.
+  std::vector<coupling::ExchangeRecord> first_exchange(coupling::Parameters p, double delta)
+  {
+    p.pd.horizon                 = delta;
+    p.cycle.max_exchanges        = 1;
+    p.cycle.exchange.min_advance = delta;
+    p.cycle.exchange.max_advance = 2. * delta;
+    p.cycle.box.margin           = 2. * delta;
+    const auto         scene     = coupling::build_scene(p.scene);
+    std::ostringstream log;
+    return coupling::run_global_local(scene, p.global_local_settings(), log).exchanges;
+  }
 } // namespace
 
 TEST(InclinedCrack, LefmGrowthGrowsBothTipsSymmetrically)
@@ -197,23 +211,16 @@ TEST(InclinedCrackStudy, DISABLED_KinkAgainstHorizon)
 {
   for (const double delta : {0.004, 0.002, 0.001, 0.0005})
     {
-      auto p                     = inclined("");
-      p.pd.horizon               = delta;
-      p.cycle.max_exchanges      = 1;
-      p.cycle.exchange.min_advance = delta;
-      p.cycle.exchange.max_advance = 2. * delta;
-      p.cycle.box.margin           = 2. * delta;
-      const auto         scene     = coupling::build_scene(p.scene);
-      std::ostringstream log;
-      const auto         r = coupling::run_global_local(scene, p.global_local_settings(), log);
-      double             error = 0., strain_error = 0.;
-      for (const auto &e : r.exchanges)
+      const auto p         = inclined("");
+      const auto exchanges = first_exchange(p, delta);
+      double     error = 0., strain_error = 0.;
+      for (const auto &e : exchanges)
         {
           const double strain_kink = max_hoop_strain_angle(e.k1, e.k2, p.scene.material.poisson_ratio);
           error        = std::max(error, std::abs(e.kink - e.predicted_kink) / degree);
           strain_error = std::max(strain_error, std::abs(e.kink - strain_kink) / degree);
         }
-      const auto &first = r.exchanges.front();
+      const auto &first = exchanges.front();
       std::cout << "delta " << delta << " m: first kink " << first.kink / degree << " deg, theta_c (hoop stress) "
                 << first.predicted_kink / degree << " deg, hoop strain "
                 << max_hoop_strain_angle(first.k1, first.k2, p.scene.material.poisson_ratio) / degree << " deg\n";
@@ -286,17 +293,9 @@ TEST(InclinedCrackStudy, DISABLED_KinkAgainstLatticeOrientation)
           crack << std::setprecision(17) << -tip.x << "," << -tip.y << "; " << tip.x << "," << tip.y;
           grips << std::setprecision(17) << "top grip: ux = " << -1e-3 * s << " * lambda, uy = " << 1e-3 * c
                 << " * lambda; bottom grip: ux = " << 1e-3 * s << " * lambda, uy = " << -1e-3 * c << " * lambda";
-          p.scene.initial_cracks       = crack.str();
-          p.scene.displacement         = grips.str();
-          p.pd.horizon                 = delta;
-          p.cycle.max_exchanges        = 1;
-          p.cycle.exchange.min_advance = delta;
-          p.cycle.exchange.max_advance = 2. * delta;
-          p.cycle.box.margin           = 2. * delta;
-          const auto         scene     = coupling::build_scene(p.scene);
-          std::ostringstream log;
-          const auto         r = coupling::run_global_local(scene, p.global_local_settings(), log);
-          for (const auto &e : r.exchanges)
+          p.scene.initial_cracks = crack.str();
+          p.scene.displacement   = grips.str();
+          for (const auto &e : first_exchange(p, delta))
             {
               const double kink = e.kink / degree;
               std::cout << "delta " << delta << " m, turned " << phi << " degrees, tip end " << e.tip_end << ": "
