@@ -119,6 +119,15 @@ namespace pumpd::global
                                "gmsh (exit status 0) wrote nothing: " + gmsh_message(log));
     }
 
+    /// A file's extension in lower case (".geo", ".msh").
+    std::string extension_of(const fs::path &file)
+    {
+      std::string extension = file.extension().string();
+      std::transform(extension.begin(), extension.end(), extension.begin(),
+                     [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+      return extension;
+    }
+
     /// The program a command names: as it is with a '/', else the first executable of that name
     /// in the PATH's directories; empty if there is none.
     fs::path program_of(const std::string &command)
@@ -150,10 +159,7 @@ namespace pumpd::global
       h               = fnv1a(text.value_or("missing " + file.string()), h);
       if (const auto options = file_contents(file.string() + ".opt"))
         h = fnv1a(*options, h);
-      std::string extension = file.extension().string();
-      std::transform(extension.begin(), extension.end(), extension.begin(),
-                     [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-      if (!text || extension != ".geo")
+      if (!text || extension_of(file) != ".geo")
         return h;
       static const std::regex reads(R"re(\b(Include|Merge|ShapeFromFile)\b\s*\(?\s*("([^"]*)")?)re");
       for (std::sregex_iterator m(text->begin(), text->end(), reads), end; m != end; ++m)
@@ -389,9 +395,7 @@ namespace pumpd::global
     if (!fs::is_regular_file(path, error))
       throw InvalidParameter("Mesh file", file, "no such file");
 
-    std::string extension = path.extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const std::string extension = extension_of(path);
 
     const auto too_many = [&](double cells, const std::string &how) {
       if (max_cells > 0. && cells > max_cells)
