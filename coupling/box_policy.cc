@@ -82,16 +82,25 @@ namespace pumpd::coupling
     }
   } // namespace
 
-  double BoxPolicy::smallest_hole_within_reach(Point tip, Point d) const
+  double BoxPolicy::smallest_hole_within_reach(Point tip, Point d, double scale) const
   {
+    BoxSettings at_scale = unscaled;
+    at_scale.size *= scale;
+    at_scale.horizon *= scale;
     double smallest = std::numeric_limits<double>::infinity();
     for (const auto &hole : body.holes())
-      if (within_reach(hole, square_ahead(tip, d, unscaled), 2. * unscaled.horizon))
+      if (within_reach(hole, square_ahead(tip, d, at_scale), 2. * at_scale.horizon))
         {
           const Box b = hole.bounding_box();
           smallest    = std::min(smallest, 0.5 * std::min(b.width(), b.height()));
         }
     return smallest;
+  }
+
+  bool BoxPolicy::fits(double scale) const
+  {
+    const Box &o = body.bounding_box();
+    return scale * unscaled.size <= std::min(o.width(), o.height());
   }
 
   Box BoxPolicy::fitted(Box box) const

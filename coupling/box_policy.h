@@ -45,9 +45,11 @@ namespace pumpd::coupling
     /// layer, stays two horizons inside it; else (a large kink) it lies ahead along the turn.
     geometry::Box place(const std::vector<geometry::Point> &tips, const std::vector<geometry::Point> &directions,
                         const std::vector<geometry::Point> &turns, double scale = 1.);
-    /// Half the smaller bounding-box side of the smallest hole the box at this tip (settings as
-    /// given, unscaled) would take in or grow for; infinity if none.
-    double smallest_hole_within_reach(geometry::Point tip, geometry::Point direction) const;
+    /// Half the smaller bounding-box side of the smallest hole the box at this tip (every length
+    /// of the settings times `scale`) would take in or grow for; infinity if none.
+    double smallest_hole_within_reach(geometry::Point tip, geometry::Point direction, double scale = 1.) const;
+    /// True if the box with every length times `scale` fits into the body.
+    bool fits(double scale) const;
     /// True if the last place() made a new box.
     bool moved() const { return last_moved; }
     const std::vector<geometry::Box> &history() const { return boxes; }

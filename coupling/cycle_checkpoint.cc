@@ -100,7 +100,7 @@ namespace pumpd::coupling
     for (std::size_t e = 0; e < s.ends.size(); ++e)
       {
         s.ends[e].load_factor = cycle[2 + 3 * e];
-        s.ends[e].halvings    = (unsigned int)(cycle[3 + 3 * e]);
+        s.ends[e].halvings    = int(cycle[3 + 3 * e]);
         s.ends[e].stopped     = cycle[4 + 3 * e] != 0.;
       }
     return s;

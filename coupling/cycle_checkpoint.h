@@ -19,7 +19,7 @@ namespace pumpd::coupling
   {
     std::vector<geometry::Box> boxes;
     double                     load_factor = 0.; ///< lambda / lambda_c of its last accepted exchange
-    unsigned int               halvings    = 0;  ///< of its last box's horizon (coupling/resolution.h)
+    int                        halvings    = 0;  ///< of its last box's horizon, < 0: doublings (coupling/resolution.h)
     bool                       stopped     = false;
   };
 

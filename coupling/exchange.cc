@@ -88,7 +88,8 @@ namespace pumpd::coupling
                                const std::vector<double> &allowed,
                                const std::vector<std::vector<geometry::Polyline>> &faces,
                                const std::function<bool(const geometry::Polyline &)> &arrives,
-                               const PeridynamicsSettings &pd, std::ostream &out, const std::string &unit)
+                               const PeridynamicsSettings &pd, std::ostream &out, const std::string &unit,
+                               double length_scale)
   {
     // Per tip: its trace ends on the other cracks' faces.
     std::vector<ExtractionSettings> extraction(tips.size());
@@ -147,7 +148,7 @@ namespace pumpd::coupling
         const auto &increment = r.increments[farthest];
         const bool  reaches   = increment.path.size() > 1 &&
                              (arrives(increment.path) || increment.stop_reason.rfind(reaches_face, 0) == 0);
-        r.decision            = controller.judge(increment.length(), allowed[farthest], reaches);
+        r.decision = controller.judge(increment.length() / length_scale, allowed[farthest] / length_scale, reaches);
         out << "    PD at " << std::setprecision(4) << lambda << " " << unit << ": " << relaxed.iterations
             << " DR iterations, advance " << increment.length() << " m"
             << (tips.size() > 1 ? " (tip " + std::to_string(farthest) + " of the box)" : "") << " -> "

@@ -38,14 +38,15 @@ namespace pumpd::coupling
   /// says whether an increment reaches a hole or the outline (accepted whatever its length, as
   /// one that reaches another crack's face).
   /// Progress (one line per state, the load factor in units of `unit`: the first tip's lambda_c,
-  /// or the lambda_i of a nucleation) to `out`.
+  /// or the lambda_i of a nucleation) to `out`. The controller judges advances in units of
+  /// `length_scale` (the box's lengths over those of the controller's settings).
   ExchangeOutcome run_exchange(const local::PdModel &model, const BoundaryTransfer &transfer,
                                ExchangeController &controller, const std::vector<TipState> &tips,
                                const std::vector<double> &allowed,
                                const std::vector<std::vector<geometry::Polyline>> &faces,
                                const std::function<bool(const geometry::Polyline &)> &arrives,
                                const PeridynamicsSettings &pd, std::ostream &out,
-                               const std::string &unit = "lambda_c");
+                               const std::string &unit = "lambda_c", double length_scale = 1.);
 
   const char *to_text(ExchangeController::Decision decision);
 

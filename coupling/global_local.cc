@@ -118,12 +118,12 @@ namespace pumpd::coupling
       {}
 
       /// The box's lengths over the section's: 2^-halvings.
-      double length_scale() const { return std::ldexp(1., -int(halvings)); }
+      double length_scale() const { return std::ldexp(1., -halvings); }
 
       BoxPolicy            boxes;
       ExchangeController   controller;
       PeridynamicsSettings pd;           ///< of this tip's box
-      unsigned int         halvings = 0; ///< its horizon: the section's / 2^halvings
+      int                  halvings = 0; ///< its horizon: the section's / 2^halvings (< 0: doubled)
       bool                 stopped  = false;
     };
 
@@ -445,11 +445,14 @@ namespace pumpd::coupling
 
     void Cycle::resolve(TipExchange &part)
     {
-      auto        &track     = tracks[part.track];
-      const double reach     = s.cycle.exchange.max_advance + s.pd.horizon;
-      const double clearance =
-        std::min(clearance_ahead(scene.body, part.tip.position, part.tip.direction, reach, 0.5 * h),
-                                        track.boxes.smallest_hole_within_reach(part.tip.position, part.tip.direction));
+      auto      &track     = tracks[part.track];
+      const auto clearance = [&](double scale) {
+        if (!track.boxes.fits(scale))
+          return 0.;
+        const double reach = scale * (s.cycle.exchange.max_advance + s.pd.horizon);
+        return std::min(clearance_ahead(scene.body, part.tip.position, part.tip.direction, reach, 0.5 * h),
+                        track.boxes.smallest_hole_within_reach(part.tip.position, part.tip.direction, scale));
+      };
       track.halvings         = horizon_halvings(s.cycle.resolution, s.pd.horizon, clearance);
       track.pd.horizon       = track.length_scale() * s.pd.horizon;
       part.record.horizon    = track.pd.horizon;
@@ -486,7 +489,7 @@ namespace pumpd::coupling
     {
       const auto   t    = Clock::now();
       TipExchange &lead = parts[box.front()];
-      unsigned int finest = 0;
+      int finest = tracks[lead.track].halvings;
       for (std::size_t m : box)
         finest = std::max(finest, tracks[parts[m].track].halvings);
       std::vector<Point> tips, directions, turns;
@@ -548,7 +551,7 @@ namespace pumpd::coupling
       auto outcome = run_exchange(
         *lead.model, transfer, track.controller, tips, allowed, faces,
         [&](const geometry::Polyline &path) { return !arrival_of(path, track.pd.horizon).reason.empty(); }, track.pd,
-        out);
+        out, "lambda_c", scale);
       result.pd_node_steps += outcome.node_steps;
       const double lambda = outcome.load_factor * lead.tip.critical_load_factor;
       for (std::size_t k = 0; k < box.size(); ++k)
@@ -562,7 +565,7 @@ namespace pumpd::coupling
           // The controller judged the tip that went farthest; another tip of the box grows with it
           // only by an advance the controller would accept on its own.
           const bool below = geometry::length(part.increment) <
-                             std::min(s.cycle.exchange.min_advance, 0.5 * allowed[k]) * (1. - 1e-12);
+                             std::min(scale * s.cycle.exchange.min_advance, 0.5 * allowed[k]) * (1. - 1e-12);
           if (part.decision == Decision::accept && below && part.branching.empty())
             part.decision = Decision::raise;
           record.pd_iterations      = outcome.iterations;

@@ -11,10 +11,11 @@ namespace pumpd::coupling
   {
     prm.enter_subsection("Resolution");
     prm.add_parameter("Rule", rule,
-                      "clearance: each PD box halves the horizon (and spacing, box, advance) until the path ahead of "
-                      "the tip keeps Clearance over horizon horizons from every hole and the outline, and every hole "
-                      "the box reaches holds as many within its radius, at most Maximum halvings times; fixed: every "
-                      "box has the horizon of the section Peridynamics.",
+                      "clearance: each PD box takes the coarsest horizon (the section Peridynamics' halved at most "
+                      "Maximum halvings times, doubled at most Maximum doublings times; spacing, box and advance "
+                      "scaled with it) at which the path ahead of the tip keeps Clearance over horizon horizons from "
+                      "every hole and the outline, and every hole the box reaches holds as many within its radius; "
+                      "fixed: every box has the horizon of the section Peridynamics.",
                       dealii::Patterns::Selection("clearance|fixed"));
     prm.add_parameter("Clearance over horizon", clearance_over_horizon,
                       "The clearance of the path ahead, in horizons of the box, at least (3: the tip's family, a free "
@@ -23,6 +24,11 @@ namespace pumpd::coupling
     prm.add_parameter("Maximum halvings", max_halvings,
                       "The box's horizon is at least the section Peridynamics' horizon / 2^this.",
                       dealii::Patterns::Integer(0, 4));
+    prm.add_parameter("Maximum doublings", max_doublings,
+                      "The box's horizon is at most the section Peridynamics' horizon x 2^this: where the path ahead "
+                      "and every hole the doubled box reaches keep Clearance over horizon doubled horizons, and the "
+                      "doubled box fits into the body, the box doubles its horizon, spacing, size and advance.",
+                      dealii::Patterns::Integer(0, 2));
     prm.leave_subsection();
   }
 
@@ -35,12 +41,17 @@ namespace pumpd::coupling
     return c;
   }
 
-  unsigned int horizon_halvings(const ResolutionSettings &s, double horizon, double clearance)
+  int horizon_halvings(const ResolutionSettings &s, double horizon, const std::function<double(double)> &clearance)
   {
-    unsigned int k = 0;
-    if (s.rule == "clearance")
-      while (k < s.max_halvings && clearance < s.clearance_over_horizon * std::ldexp(horizon, -int(k)))
-        ++k;
-    return k;
+    if (s.rule != "clearance")
+      return 0;
+    const double finer = clearance(1.);
+    for (int k = -int(s.max_doublings); k < int(s.max_halvings); ++k)
+      {
+        const double scale = std::ldexp(1., -k);
+        if ((k < 0 ? clearance(scale) : finer) >= s.clearance_over_horizon * scale * horizon)
+          return k;
+      }
+    return int(s.max_halvings);
   }
 } // namespace pumpd::coupling

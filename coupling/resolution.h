@@ -6,17 +6,22 @@
 // free horizon of bulk lies between them: clearance >= 3 delta. A hole's stress concentration
 // decays over its radius R, which the box resolves by the same count: R >= 3 delta. So the box's
 // horizon is
-//   delta_k = delta / 2^k,  k the least number of halvings (at most `max_halvings`) with
-//   c >= clearance_over_horizon * delta_k,
-// c the least of the clearance (to holes and the outline) of the path the crack may take in this
-// exchange (the segment from the tip along its direction over the maximum advance plus one
-// horizon) and the radius of every hole the box at the section's horizon reaches
-// (BoxPolicy::smallest_hole_within_reach).
+//   delta_k = delta / 2^k,  k in [-max_doublings, max_halvings] the least with
+//   c_k >= clearance_over_horizon * delta_k,
+// c_k the least of the clearance (to holes and the outline) of the path the crack may take in
+// this exchange (the segment from the tip along its direction over the maximum advance plus one
+// horizon) and the radius of every hole the box reaches (BoxPolicy::smallest_hole_within_reach),
+// the path and the box at delta_k where it is coarser than delta, at delta where it is finer. A
+// doubled box must fit into the body. A doubled box takes half as many exchanges for the same
+// crack length; its path is that of the coarser horizon (the path converges with the horizon,
+// docs/ingraffea.md), so doubling is a choice of the speed/accuracy trade, off by default.
 // Each box is its own PD problem, so delta changes from one exchange to the next without the
 // ghost forces of a variable horizon within one body (Silling, Littlewood, Seleson 2015). The
-// box, its margin and the advance per exchange scale with delta_k; the spacing is delta_k / m.
+// box, its margin and the advance per exchange (the minimum and maximum advance and the near
+// distance) scale with delta_k; the spacing is delta_k / m.
 #pragma once
 
+#include <functional>
 #include <string>
 
 #include "body.h"
@@ -34,6 +39,7 @@ namespace pumpd::coupling
     std::string  rule                   = "clearance"; ///< clearance | fixed (the section Peridynamics' horizon)
     double       clearance_over_horizon = 3.;          ///< c / delta_k at least
     unsigned int max_halvings           = 1;
+    unsigned int max_doublings          = 0;
 
     void add_parameters(dealii::ParameterHandler &prm);
   };
@@ -43,6 +49,9 @@ namespace pumpd::coupling
   double clearance_ahead(const geometry::Body &body, geometry::Point tip, geometry::Point direction, double reach,
                          double step);
 
-  /// k, delta_k = delta / 2^k, for a path with clearance c ahead (0 under the fixed rule).
-  unsigned int horizon_halvings(const ResolutionSettings &settings, double horizon, double clearance);
+  /// k, delta_k = delta / 2^k (k < 0: a doubling), where `clearance(scale)` is c_k measured with
+  /// the path and the box of the horizon delta x scale (0 where that box does not fit); k = 0
+  /// under the fixed rule.
+  int horizon_halvings(const ResolutionSettings &settings, double horizon,
+                       const std::function<double(double scale)> &clearance);
 } // namespace pumpd::coupling

@@ -22,7 +22,7 @@ TEST(CycleCheckpoint, RoundTripIsExact)
   s.ends        = {{{{0.07, 0.01, 0.09, 0.03}}, 0.95, 0, true},
                    {{{0.0855, 0.0155, 0.118, 0.048}, {0.0905, 0.0265, 0.123, 0.059}}, 1.0999999999999999, 1, false},
                    {},
-                   {{{0.29, 0., 0.31, 0.02}}, 1.05, 0, false}};
+                   {{{0.29, 0., 0.31, 0.02}}, 1.05, -1, false}}; // a doubled box
   const std::string file = (dir / "checkpoint.h5").string();
   write_cycle_checkpoint(file, s);
   const auto r = read_cycle_checkpoint(file);

@@ -4,6 +4,7 @@
 // PD spacing m = 4 here (h = 1 mm, delta = 4 mm) to keep it short.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -32,6 +33,22 @@ namespace
     const auto         r = run_global_local(build_scene(p.scene), p.global_local_settings(), log);
     std::cout << log.str();
     return r;
+  }
+
+  void expect_same_boxes_and_path(const GlobalLocalResult &a, const GlobalLocalResult &b)
+  {
+    ASSERT_EQ(a.boxes.size(), b.boxes.size());
+    for (std::size_t k = 0; k < a.boxes.size(); ++k)
+      {
+        EXPECT_EQ(a.boxes[k].x_min, b.boxes[k].x_min) << k;
+        EXPECT_EQ(a.boxes[k].y_max, b.boxes[k].y_max) << k;
+      }
+    ASSERT_EQ(a.path.size(), b.path.size());
+    for (std::size_t k = 0; k < a.path.size(); ++k)
+      {
+        EXPECT_EQ(a.path[k].x, b.path[k].x) << k;
+        EXPECT_EQ(a.path[k].y, b.path[k].y) << k;
+      }
   }
 
   std::size_t lines(const std::string &file)
@@ -106,18 +123,36 @@ TEST(GlobalLocal, ResumedRunWithHalvedBoxesMatchesTheUninterruptedOne)
     EXPECT_EQ(e.horizon, 0.5 * whole.pd.horizon);
   ASSERT_GE(a.boxes.size(), 3u);
   EXPECT_EQ(a.boxes[2].x_min, a.boxes[1].x_min); // kept: the case this test is about
-  ASSERT_EQ(a.boxes.size(), b.boxes.size());
-  for (std::size_t k = 0; k < a.boxes.size(); ++k)
-    {
-      EXPECT_EQ(a.boxes[k].x_min, b.boxes[k].x_min) << k;
-      EXPECT_EQ(a.boxes[k].y_max, b.boxes[k].y_max) << k;
-    }
-  ASSERT_EQ(a.path.size(), b.path.size());
-  for (std::size_t k = 0; k < a.path.size(); ++k)
-    {
-      EXPECT_EQ(a.path[k].x, b.path[k].x) << k;
-      EXPECT_EQ(a.path[k].y, b.path[k].y) << k;
-    }
+  expect_same_boxes_and_path(a, b);
+}
+
+// Every box at twice the horizon where the coarse Case I beam (no holes) leaves room for it
+// (Maximum doublings = 1): the tip starts 25.4 mm above the bottom edge, more than 3 doubled
+// horizons, so the first exchanges run in boxes of 8 mm horizon and 64 mm side. Resumed after 2
+// exchanges, the run continues in them as the uninterrupted one, bit for bit.
+TEST(GlobalLocal, ResumedRunWithDoubledBoxesMatchesTheUninterruptedOne)
+{
+  const auto doubled = [](const std::string &output, unsigned int exchanges) {
+    auto p = test::scene_file("tests/regression/ingraffea-case1-coarse.prm", output);
+    p.cycle.max_exchanges                = exchanges;
+    p.cycle.resolution.max_doublings     = 1;
+    return p;
+  };
+  const auto whole = doubled("global_local_doubled_whole", 4);
+  const auto a     = run(whole);
+  auto       part  = doubled("global_local_doubled_part", 2);
+  run(part);
+  part.cycle.max_exchanges = 4;
+  part.cycle.resume        = true;
+  const auto b             = run(part);
+  ASSERT_EQ(a.exchanges.size(), 4u);
+  for (const auto &e : a.exchanges)
+    EXPECT_EQ(e.horizon, 2. * whole.pd.horizon);
+  // Each box at least the doubled side (less a spacing of its lattice either side), more where it
+  // reaches out to the outline.
+  for (const auto &box : a.boxes)
+    EXPECT_GE(std::min(box.width(), box.height()), 2. * whole.cycle.box.size - 4. * whole.pd.spacing());
+  expect_same_boxes_and_path(a, b);
 }
 
 // Cracks that meet (prm/beam-t-junction.prm: the coarse Case I beam, m = 8): the notch below a

@@ -58,7 +58,7 @@ namespace
         if (geometry::norm(path[k] - initial.back()) < 1e-9)
           last = k;
       }
-    std::array<geometry::Polyline, 2> b{geometry::Polyline{centre}, geometry::Polyline{centre}};
+    std::array<geometry::Polyline, 2> b{{geometry::Polyline{centre}, geometry::Polyline{centre}}};
     for (std::size_t k = first + 1; k-- > 0;)
       b[0].push_back(path[k]);
     for (std::size_t k = last; k < path.size(); ++k)

@@ -1,8 +1,10 @@
 // The resolution rule (coupling/resolution.h): the clearance of the path ahead of a tip, the
-// number of halvings it asks for, and the box of a halved horizon (box_policy.h).
+// number of halvings or doublings it asks for, and the box of a halved or doubled horizon
+// (box_policy.h).
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "box_policy.h"
 #include "resolution.h"
@@ -30,16 +32,40 @@ TEST(Resolution, ClearanceAheadIsTheDistanceOfTheSegmentFromTheHole)
 
 TEST(Resolution, HalvesTheHorizonUntilTheClearanceHoldsThreeHorizons)
 {
-  coupling::ResolutionSettings s; // clearance rule, 3 horizons, at most one halving
+  coupling::ResolutionSettings s; // clearance rule, 3 horizons, at most one halving, no doubling
   const double                 delta = 0.004;
-  EXPECT_EQ(coupling::horizon_halvings(s, delta, 0.0121), 0u); // >= 12 mm: the section's 4 mm
-  EXPECT_EQ(coupling::horizon_halvings(s, delta, 0.0119), 1u); // 2 mm
-  EXPECT_EQ(coupling::horizon_halvings(s, delta, 0.001), 1u);  // at most one halving
+  const auto                   at    = [](double c) { return [c](double) { return c; }; };
+  EXPECT_EQ(coupling::horizon_halvings(s, delta, at(0.0121)), 0); // >= 12 mm: the section's 4 mm
+  EXPECT_EQ(coupling::horizon_halvings(s, delta, at(0.0119)), 1); // 2 mm
+  EXPECT_EQ(coupling::horizon_halvings(s, delta, at(0.001)), 1);  // at most one halving
   s.max_halvings = 3;
-  EXPECT_EQ(coupling::horizon_halvings(s, delta, 0.0059), 2u); // 1 mm: 3 mm <= 5.9 mm < 6 mm
-  EXPECT_EQ(coupling::horizon_halvings(s, delta, 0.), 3u);
+  EXPECT_EQ(coupling::horizon_halvings(s, delta, at(0.0059)), 2); // 1 mm: 3 mm <= 5.9 mm < 6 mm
+  EXPECT_EQ(coupling::horizon_halvings(s, delta, at(0.)), 3);
   s.rule = "fixed";
-  EXPECT_EQ(coupling::horizon_halvings(s, delta, 0.), 0u);
+  EXPECT_EQ(coupling::horizon_halvings(s, delta, at(0.)), 0);
+}
+
+TEST(Resolution, DoublesTheHorizonWhereTheDoubledBoxAndPathKeepThreeDoubledHorizons)
+{
+  coupling::ResolutionSettings s;
+  s.max_doublings    = 2;
+  const double delta = 0.004;
+  // The clearance grows with the reach of the path and the box: here it is c_1 = 30 mm at the
+  // section's scale and below, 25 mm at twice it, 10 mm at four times it.
+  std::vector<double> asked;
+  const auto clearance = [&](double scale) {
+    asked.push_back(scale);
+    return scale <= 1. ? 0.030 : scale == 2. ? 0.025 : 0.010;
+  };
+  // 16 mm needs 48 mm (c_4 = 10 mm), 8 mm needs 24 mm (c_2 = 25 mm): one doubling.
+  EXPECT_EQ(coupling::horizon_halvings(s, delta, clearance), -1);
+  EXPECT_EQ(asked, (std::vector<double>{1., 4., 2.}));
+  // Where the doubled box's clearance is short of 24 mm, the section's horizon: the finer
+  // scales are judged by the clearance at the section's scale, as without doublings.
+  EXPECT_EQ(coupling::horizon_halvings(s, delta, [](double scale) { return scale <= 1. ? 0.013 : 0.02; }), 0);
+  EXPECT_EQ(coupling::horizon_halvings(s, delta, [](double scale) { return scale <= 1. ? 0.011 : 0.1; }), -2);
+  // A box that does not fit has no clearance (Cycle::resolve): no doubling.
+  EXPECT_EQ(coupling::horizon_halvings(s, delta, [](double scale) { return scale <= 1. ? 0.011 : 0.; }), 1);
 }
 
 TEST(Resolution, AHalvedBoxHasHalfTheSideAndIsNeverKeptAcrossScales)
@@ -69,4 +95,20 @@ TEST(Resolution, AHoleTheBoxReachesCountsWithItsRadius)
   // 16 mm to the right plus 2 horizons): the hole's radius. Far below it, nothing.
   EXPECT_NEAR(policy.smallest_hole_within_reach({0.1324, 0.06}, {0., 1.}), 0.00635, 1e-12);
   EXPECT_TRUE(std::isinf(policy.smallest_hole_within_reach({0.1324, 0.01}, {0., 1.})));
+}
+
+TEST(Resolution, ADoubledBoxReachesTheHolesOfTwiceTheSideAndMustFitTheBody)
+{
+  coupling::BoxSettings b;
+  b.horizon = 0.004, b.spacing = 0.0005, b.size = 0.032, b.margin = 0.008, b.max_size = 0.064;
+  // A tip 40 mm left of the hole's centre heading up: the right side of its 32 mm box, 16 mm
+  // from the tip, stays 9.65 mm outside the hole's reach (its rim 33.65 mm from the tip, less 2
+  // horizons); the doubled box (32 mm to the tip's right, 16 mm of reach) takes it in.
+  const coupling::BoxPolicy policy(beam, b);
+  const Point               tip{0.1124, 0.06};
+  EXPECT_TRUE(std::isinf(policy.smallest_hole_within_reach(tip, {0., 1.})));
+  EXPECT_NEAR(policy.smallest_hole_within_reach(tip, {0., 1.}, 2.), 0.00635, 1e-12);
+  // The beam is 203.2 mm high: a box of 4 x 32 mm fits, one of 8 x 32 mm does not.
+  EXPECT_TRUE(policy.fits(4.));
+  EXPECT_FALSE(policy.fits(8.));
 }
