@@ -145,10 +145,13 @@ namespace pumpd::coupling
         for (std::size_t k = 1; k < tips.size(); ++k)
           if (r.increments[k].length() / allowed[k] > r.increments[farthest].length() / allowed[farthest])
             farthest = k;
+        r.reaches.clear();
+        for (const auto &increment : r.increments)
+          r.reaches.push_back(increment.path.size() > 1 && (arrives(increment.path) ||
+                                                            increment.stop_reason.rfind(reaches_face, 0) == 0));
         const auto &increment = r.increments[farthest];
-        const bool  reaches   = increment.path.size() > 1 &&
-                             (arrives(increment.path) || increment.stop_reason.rfind(reaches_face, 0) == 0);
-        r.decision = controller.judge(increment.length() / length_scale, allowed[farthest] / length_scale, reaches);
+        r.decision            = controller.judge(increment.length() / length_scale, allowed[farthest] / length_scale,
+                                                 r.reaches[farthest]);
         out << "    PD at " << std::setprecision(4) << lambda << " " << unit << ": " << relaxed.iterations
             << " DR iterations, advance " << increment.length() << " m"
             << (tips.size() > 1 ? " (tip " + std::to_string(farthest) + " of the box)" : "") << " -> "

@@ -23,6 +23,7 @@ namespace pumpd::coupling
   struct ExchangeOutcome
   {
     std::vector<CrackIncrement>  increments;        ///< per tip, in the order given
+    std::vector<bool>            reaches;           ///< per tip: its increment meets a hole, the outline or another crack's face
     ExchangeController::Decision decision = ExchangeController::Decision::raise;
     std::string                  branching;         ///< the ridge split there (refused); "" otherwise
     double                       load_factor = 0.;  ///< lambda / lambda_c of the last state

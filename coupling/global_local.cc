@@ -450,8 +450,17 @@ namespace pumpd::coupling
         if (!track.boxes.fits(scale))
           return 0.;
         const double reach = scale * (s.cycle.exchange.max_advance + s.pd.horizon);
-        return std::min(clearance_ahead(scene.body, part.tip.position, part.tip.direction, reach, 0.5 * h),
-                        track.boxes.smallest_hole_within_reach(part.tip.position, part.tip.direction, scale));
+        double       c     = std::min(clearance_ahead(scene.body, part.tip.position, part.tip.direction, reach, 0.5 * h),
+                                      track.boxes.smallest_hole_within_reach(part.tip.position, part.tip.direction, scale));
+        if (scale > 1.)
+          {
+            std::vector<geometry::Polyline> others;
+            for (std::size_t k = 0; k < cracks.size(); ++k)
+              if (k != part.track / 2)
+                others.push_back(cracks[k].vertices());
+            c = std::min(c, clearance_ahead(others, part.tip.position, part.tip.direction, reach, 0.5 * h));
+          }
+        return c;
       };
       track.halvings         = horizon_halvings(s.cycle.resolution, s.pd.horizon, clearance);
       track.pd.horizon       = track.length_scale() * s.pd.horizon;
@@ -534,6 +543,9 @@ namespace pumpd::coupling
       TipExchange          &lead  = parts[box.front()];
       auto                 &track = tracks[owner(box, parts)];
       const double          scale = track.length_scale();
+      // A doubled box's minimum advance doubles (an increment shorter than its horizon comes out
+      // straight ahead); a halved box keeps the section's, capped at half its allowed advance.
+      const double advance_scale = std::max(1., scale);
       std::vector<TipState>                        tips;
       std::vector<double>                          allowed;
       std::vector<std::vector<geometry::Polyline>> faces;
@@ -551,7 +563,7 @@ namespace pumpd::coupling
       auto outcome = run_exchange(
         *lead.model, transfer, track.controller, tips, allowed, faces,
         [&](const geometry::Polyline &path) { return !arrival_of(path, track.pd.horizon).reason.empty(); }, track.pd,
-        out, "lambda_c", scale);
+        out, "lambda_c", advance_scale);
       result.pd_node_steps += outcome.node_steps;
       const double lambda = outcome.load_factor * lead.tip.critical_load_factor;
       for (std::size_t k = 0; k < box.size(); ++k)
@@ -563,9 +575,14 @@ namespace pumpd::coupling
           part.decision  = outcome.decision;
           part.branching = outcome.branching;
           // The controller judged the tip that went farthest; another tip of the box grows with it
-          // only by an advance the controller would accept on its own.
-          const bool below = geometry::length(part.increment) <
-                             std::min(scale * s.cycle.exchange.min_advance, 0.5 * allowed[k]) * (1. - 1e-12);
+          // only by an advance the controller would accept on its own: one within the allowed
+          // advance that reaches a hole, the outline or another crack's face, or one at least the
+          // minimum advance.
+          const bool reaches = k < outcome.reaches.size() && outcome.reaches[k] &&
+                               outcome.increments[k].length() <= allowed[k];
+          const bool below   = !reaches && geometry::length(part.increment) <
+                                             std::min(advance_scale * s.cycle.exchange.min_advance, 0.5 * allowed[k]) *
+                                               (1. - 1e-12);
           if (part.decision == Decision::accept && below && part.branching.empty())
             part.decision = Decision::raise;
           record.pd_iterations      = outcome.iterations;

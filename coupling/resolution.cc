@@ -4,6 +4,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+
+#include "path_metrics.h"
 
 namespace pumpd::coupling
 {
@@ -25,9 +28,11 @@ namespace pumpd::coupling
                       "The box's horizon is at least the section Peridynamics' horizon / 2^this.",
                       dealii::Patterns::Integer(0, 4));
     prm.add_parameter("Maximum doublings", max_doublings,
-                      "The box's horizon is at most the section Peridynamics' horizon x 2^this: where the path ahead "
-                      "and every hole the doubled box reaches keep Clearance over horizon doubled horizons, and the "
-                      "doubled box fits into the body, the box doubles its horizon, spacing, size and advance.",
+                      "The box's horizon is at most the section Peridynamics' horizon x 2^this. A box doubles its "
+                      "horizon (and spacing, side, margin, advance) where its doubled path ahead (twice as long) "
+                      "keeps Clearance over horizon doubled horizons from every hole, the outline and the other "
+                      "cracks, every hole the doubled box reaches holds as many within its radius, and the doubled "
+                      "box fits into the body.",
                       dealii::Patterns::Integer(0, 2));
     prm.leave_subsection();
   }
@@ -38,6 +43,17 @@ namespace pumpd::coupling
     double    c = body.clearance(tip);
     for (int k = 1; k <= n; ++k)
       c = std::min(c, body.clearance(tip + (reach * k / n) * d));
+    return c;
+  }
+
+  double clearance_ahead(const std::vector<geometry::Polyline> &faces, geometry::Point tip, geometry::Point d,
+                         double reach, double step)
+  {
+    const int n = std::max(1, int(std::ceil(reach / step)));
+    double    c = std::numeric_limits<double>::infinity();
+    for (const auto &face : faces)
+      for (int k = 0; k <= n; ++k)
+        c = std::min(c, distance_to_polyline(tip + (reach * k / n) * d, face));
     return c;
   }
 

@@ -12,17 +12,20 @@
 // this exchange (the segment from the tip along its direction over the maximum advance plus one
 // horizon) and the radius of every hole the box reaches (BoxPolicy::smallest_hole_within_reach),
 // the path and the box at delta_k where it is coarser than delta, at delta where it is finer. A
-// doubled box must fit into the body. A doubled box takes half as many exchanges for the same
+// doubled box must fit into the body, and its path must keep the clearance from the other
+// cracks' faces too (a finer box resolves them anyway). A doubled box takes half as many exchanges for the same
 // crack length; its path is that of the coarser horizon (the path converges with the horizon,
 // docs/ingraffea.md), so doubling is a choice of the speed/accuracy trade, off by default.
 // Each box is its own PD problem, so delta changes from one exchange to the next without the
 // ghost forces of a variable horizon within one body (Silling, Littlewood, Seleson 2015). The
-// box, its margin and the advance per exchange (the minimum and maximum advance and the near
-// distance) scale with delta_k; the spacing is delta_k / m.
+// box, its margin, the maximum advance per exchange and the near distance scale with delta_k, the
+// minimum advance where delta_k is coarser than delta (a finer box takes at least half its
+// allowed advance); the spacing is delta_k / m.
 #pragma once
 
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "body.h"
 
@@ -48,6 +51,9 @@ namespace pumpd::coupling
   /// sampled every `step` [m].
   double clearance_ahead(const geometry::Body &body, geometry::Point tip, geometry::Point direction, double reach,
                          double step);
+  /// The same for the distance from the polylines `faces` (infinity if there are none).
+  double clearance_ahead(const std::vector<geometry::Polyline> &faces, geometry::Point tip, geometry::Point direction,
+                         double reach, double step);
 
   /// k, delta_k = delta / 2^k (k < 0: a doubling), where `clearance(scale)` is c_k measured with
   /// the path and the box of the horizon delta x scale (0 where that box does not fit); k = 0

@@ -152,6 +152,8 @@ TEST(GlobalLocal, ResumedRunWithDoubledBoxesMatchesTheUninterruptedOne)
   // reaches out to the outline.
   for (const auto &box : a.boxes)
     EXPECT_GE(std::min(box.width(), box.height()), 2. * whole.cycle.box.size - 4. * whole.pd.spacing());
+  ASSERT_GE(a.boxes.size(), 3u);
+  EXPECT_EQ(a.boxes[2].x_min, a.boxes[1].x_min); // kept across the resume
   expect_same_boxes_and_path(a, b);
 }
 
@@ -202,4 +204,21 @@ TEST(GlobalLocal, TheOtherCrackGrowsAfterAJoinAndAResumedRunFindsTheJunction)
           EXPECT_EQ(a.paths[c][k].y, b.paths[c][k].y) << c << ", " << k;
         }
     }
+}
+
+// A tip that starts half a horizon below another crack's face (the T-junction scene, the notch's
+// tip 2 mm below the interior crack): the first PD state's ridge reaches the face, an advance
+// shorter than the minimum, and the tip joins that crack there rather than wait for a longer one
+// that cannot come.
+TEST(GlobalLocal, ATipHalfAHorizonBelowAnotherCracksFaceJoinsIt)
+{
+  auto p                = test::scene_file("prm/beam-t-junction.prm", "global_local_t_near");
+  p.scene.initial_cracks = "0.1016,0; 0.1016,0.0444 | 0.07,0.0464; 0.13,0.0464";
+  p.cycle.max_exchanges  = 1;
+  const auto r           = run(p);
+  ASSERT_EQ(r.exchanges.size(), 1u);
+  EXPECT_EQ(r.exchanges[0].decision, "accept");
+  EXPECT_NEAR(r.exchanges[0].advance, 0.002, 0.5 * p.pd.spacing());
+  ASSERT_EQ(r.paths.size(), 2u);
+  EXPECT_LT(distance_to_polyline(r.paths[0].back(), r.paths[1]), 1e-9) << "the notch ends on the interior crack's face";
 }

@@ -66,6 +66,26 @@ TEST(Resolution, DoublesTheHorizonWhereTheDoubledBoxAndPathKeepThreeDoubledHoriz
   EXPECT_EQ(coupling::horizon_halvings(s, delta, [](double scale) { return scale <= 1. ? 0.011 : 0.1; }), -2);
   // A box that does not fit has no clearance (Cycle::resolve): no doubling.
   EXPECT_EQ(coupling::horizon_halvings(s, delta, [](double scale) { return scale <= 1. ? 0.011 : 0.; }), 1);
+  // Without doublings only the section's scale is asked, whatever the finer boxes would see.
+  s.max_doublings = 0;
+  s.max_halvings  = 2;
+  asked.clear();
+  EXPECT_EQ(coupling::horizon_halvings(s, delta, [&](double scale) {
+              asked.push_back(scale);
+              return scale == 1. ? 0.013 : 0.;
+            }),
+            0);
+  EXPECT_EQ(asked, std::vector<double>{1.});
+}
+
+TEST(Resolution, ClearanceAheadOfOtherCracksFaces)
+{
+  // A face 10 mm to the right of a tip heading up, from 5 mm to 30 mm above it: the segment's
+  // points from 5 mm on are 10 mm from it, the tip itself 11.2 mm.
+  const std::vector<geometry::Polyline> faces{{{0.01, 0.005}, {0.01, 0.03}}};
+  EXPECT_NEAR(coupling::clearance_ahead(faces, {0., 0.}, {0., 1.}, 0.024, 0.0005), 0.01, 1e-12);
+  EXPECT_NEAR(coupling::clearance_ahead(faces, {0., 0.}, {0., 1.}, 0.002, 0.0005), std::hypot(0.01, 0.003), 1e-12);
+  EXPECT_TRUE(std::isinf(coupling::clearance_ahead(std::vector<geometry::Polyline>{}, {0., 0.}, {0., 1.}, 0.024, 0.0005)));
 }
 
 TEST(Resolution, AHalvedBoxHasHalfTheSideAndIsNeverKeptAcrossScales)
@@ -101,11 +121,11 @@ TEST(Resolution, ADoubledBoxReachesTheHolesOfTwiceTheSideAndMustFitTheBody)
 {
   coupling::BoxSettings b;
   b.horizon = 0.004, b.spacing = 0.0005, b.size = 0.032, b.margin = 0.008, b.max_size = 0.064;
-  // A tip 40 mm left of the hole's centre heading up: the right side of its 32 mm box, 16 mm
-  // from the tip, stays 9.65 mm outside the hole's reach (its rim 33.65 mm from the tip, less 2
-  // horizons); the doubled box (32 mm to the tip's right, 16 mm of reach) takes it in.
+  // A tip whose horizontal distance to the hole's rim is 44 mm, heading up: the right side of its
+  // 32 mm box, 16 mm from the tip, stays outside the hole's reach of 2 horizons; the doubled box
+  // (32 mm to the tip's right) takes it in only with its doubled reach (16 mm, not 8 mm).
   const coupling::BoxPolicy policy(beam, b);
-  const Point               tip{0.1124, 0.06};
+  const Point               tip{0.10205, 0.06};
   EXPECT_TRUE(std::isinf(policy.smallest_hole_within_reach(tip, {0., 1.})));
   EXPECT_NEAR(policy.smallest_hole_within_reach(tip, {0., 1.}, 2.), 0.00635, 1e-12);
   // The beam is 203.2 mm high: a box of 4 x 32 mm fits, one of 8 x 32 mm does not.
