@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include "global_local.h"
 #include "path_metrics.h"
@@ -33,6 +34,20 @@ namespace
     const auto         r = run_global_local(build_scene(p.scene), p.global_local_settings(), log);
     std::cout << log.str();
     return r;
+  }
+
+  /// The run of `exchanges` exchanges of the parameters `make(output, exchanges)`, and the same
+  /// run stopped after `resumed_after` and resumed.
+  template <typename Make>
+  std::pair<GlobalLocalResult, GlobalLocalResult> whole_and_resumed(const Make &make, const std::string &output,
+                                                                    unsigned int exchanges, unsigned int resumed_after)
+  {
+    auto whole = run(make(output + "_whole", exchanges));
+    auto part  = make(output + "_part", resumed_after);
+    run(part);
+    part.cycle.max_exchanges = exchanges;
+    part.cycle.resume        = true;
+    return {std::move(whole), run(part)};
   }
 
   void expect_same_boxes_and_path(const GlobalLocalResult &a, const GlobalLocalResult &b)
@@ -89,12 +104,7 @@ TEST(GlobalLocal, OutputsAndLoads)
 // (bit for bit: the mesh refinement is replayed from the checkpoint).
 TEST(GlobalLocal, ResumedRunMatchesTheUninterruptedOne)
 {
-  const auto a    = run(coarse("global_local_whole", 5));
-  auto       part = coarse("global_local_part", 3);
-  run(part);
-  part.cycle.max_exchanges = 5;
-  part.cycle.resume        = true;
-  const auto b             = run(part);
+  const auto [a, b] = whole_and_resumed(coarse, "global_local", 5, 3);
   ASSERT_EQ(a.path.size(), b.path.size());
   for (std::size_t k = 0; k < a.path.size(); ++k)
     {
@@ -109,18 +119,15 @@ TEST(GlobalLocal, ResumedRunMatchesTheUninterruptedOne)
 // the halved box of the second in the uninterrupted run, and so must the resumed one.
 TEST(GlobalLocal, ResumedRunWithHalvedBoxesMatchesTheUninterruptedOne)
 {
-  auto whole = coarse("global_local_halved_whole", 5);
-  whole.cycle.resolution.clearance_over_horizon = 20.;
-  const auto a = run(whole);
-  auto part    = coarse("global_local_halved_part", 2);
-  part.cycle.resolution.clearance_over_horizon = 20.;
-  run(part);
-  part.cycle.max_exchanges = 5;
-  part.cycle.resume        = true;
-  const auto b             = run(part);
+  const auto halved = [](const std::string &output, unsigned int exchanges) {
+    auto p                                    = coarse(output, exchanges);
+    p.cycle.resolution.clearance_over_horizon = 20.;
+    return p;
+  };
+  const auto [a, b] = whole_and_resumed(halved, "global_local_halved", 5, 2);
   ASSERT_EQ(a.exchanges.size(), 5u);
   for (const auto &e : a.exchanges)
-    EXPECT_EQ(e.horizon, 0.5 * whole.pd.horizon);
+    EXPECT_EQ(e.horizon, 0.5 * halved("", 1).pd.horizon);
   ASSERT_GE(a.boxes.size(), 3u);
   EXPECT_EQ(a.boxes[2].x_min, a.boxes[1].x_min); // kept: the case this test is about
   expect_same_boxes_and_path(a, b);
@@ -133,25 +140,20 @@ TEST(GlobalLocal, ResumedRunWithHalvedBoxesMatchesTheUninterruptedOne)
 TEST(GlobalLocal, ResumedRunWithDoubledBoxesMatchesTheUninterruptedOne)
 {
   const auto doubled = [](const std::string &output, unsigned int exchanges) {
-    auto p = test::scene_file("tests/regression/ingraffea-case1-coarse.prm", output);
-    p.cycle.max_exchanges                = exchanges;
-    p.cycle.resolution.max_doublings     = 1;
+    auto p                           = test::scene_file("tests/regression/ingraffea-case1-coarse.prm", output);
+    p.cycle.max_exchanges            = exchanges;
+    p.cycle.resolution.max_doublings = 1;
     return p;
   };
-  const auto whole = doubled("global_local_doubled_whole", 4);
-  const auto a     = run(whole);
-  auto       part  = doubled("global_local_doubled_part", 2);
-  run(part);
-  part.cycle.max_exchanges = 4;
-  part.cycle.resume        = true;
-  const auto b             = run(part);
+  const auto [a, b] = whole_and_resumed(doubled, "global_local_doubled", 4, 2);
+  const auto p      = doubled("", 1);
   ASSERT_EQ(a.exchanges.size(), 4u);
   for (const auto &e : a.exchanges)
-    EXPECT_EQ(e.horizon, 2. * whole.pd.horizon);
+    EXPECT_EQ(e.horizon, 2. * p.pd.horizon);
   // Each box at least the doubled side (less a spacing of its lattice either side), more where it
   // reaches out to the outline.
   for (const auto &box : a.boxes)
-    EXPECT_GE(std::min(box.width(), box.height()), 2. * whole.cycle.box.size - 4. * whole.pd.spacing());
+    EXPECT_GE(std::min(box.width(), box.height()), 2. * p.cycle.box.size - 4. * p.pd.spacing());
   ASSERT_GE(a.boxes.size(), 3u);
   EXPECT_EQ(a.boxes[2].x_min, a.boxes[1].x_min); // kept across the resume
   expect_same_boxes_and_path(a, b);
