@@ -440,7 +440,7 @@ namespace pumpd::global
     for (const auto &cell : tria.active_cell_iterators())
       for (const auto &face : cell->face_iterators())
         if (face->at_boundary())
-          edges.push_back({face->vertex_index(0), face->vertex_index(1)});
+          edges.push_back({{face->vertex_index(0), face->vertex_index(1)}});
     return geometry::body_from_edges(vertices, edges);
   }
 

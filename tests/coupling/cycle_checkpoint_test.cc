@@ -36,7 +36,9 @@ TEST(CycleCheckpoint, RoundTripIsExact)
       EXPECT_EQ(r.ends[e].stopped, s.ends[e].stopped);
       ASSERT_EQ(r.ends[e].boxes.size(), s.ends[e].boxes.size());
       if (!s.ends[e].boxes.empty())
-        EXPECT_EQ(r.ends[e].boxes.back().y_max, s.ends[e].boxes.back().y_max);
+        {
+          EXPECT_EQ(r.ends[e].boxes.back().y_max, s.ends[e].boxes.back().y_max);
+        }
     }
   ASSERT_EQ(r.cracks.size(), s.cracks.size());
   for (std::size_t c = 0; c < s.cracks.size(); ++c)
