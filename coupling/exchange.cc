@@ -129,6 +129,7 @@ namespace pumpd::coupling
         t = Clock::now();
         const DamageField damage = damage_field(model, s);
         r.increments.clear();
+        r.reaches.clear();
         try
           {
             for (std::size_t k = 0; k < tips.size(); ++k)
@@ -145,7 +146,6 @@ namespace pumpd::coupling
         for (std::size_t k = 1; k < tips.size(); ++k)
           if (r.increments[k].length() / allowed[k] > r.increments[farthest].length() / allowed[farthest])
             farthest = k;
-        r.reaches.clear();
         for (const auto &increment : r.increments)
           r.reaches.push_back(increment.path.size() > 1 && (arrives(increment.path) ||
                                                             increment.stop_reason.rfind(reaches_face, 0) == 0));
