@@ -89,7 +89,7 @@ namespace pumpd::coupling
                                const std::vector<std::vector<geometry::Polyline>> &faces,
                                const std::function<bool(const geometry::Polyline &)> &arrives,
                                const PeridynamicsSettings &pd, std::ostream &out, const std::string &unit,
-                               double length_scale)
+                               double advance_scale)
   {
     // Per tip: its trace ends on the other cracks' faces.
     std::vector<ExtractionSettings> extraction(tips.size());
@@ -150,7 +150,7 @@ namespace pumpd::coupling
           r.reaches.push_back(increment.path.size() > 1 && (arrives(increment.path) ||
                                                             increment.stop_reason.rfind(reaches_face, 0) == 0));
         const auto &increment = r.increments[farthest];
-        r.decision            = controller.judge(increment.length() / length_scale, allowed[farthest] / length_scale,
+        r.decision            = controller.judge(increment.length() / advance_scale, allowed[farthest] / advance_scale,
                                                  r.reaches[farthest]);
         out << "    PD at " << std::setprecision(4) << lambda << " " << unit << ": " << relaxed.iterations
             << " DR iterations, advance " << increment.length() << " m"

@@ -23,7 +23,7 @@ namespace pumpd::coupling
   struct ExchangeOutcome
   {
     std::vector<CrackIncrement>  increments;        ///< per tip, in the order given
-    std::vector<bool>            reaches;           ///< per tip: its increment meets a hole, the outline or another crack's face
+    std::vector<bool>            reaches;           ///< per tip: its increment meets a hole, the outline or another crack's face (none after a branching)
     ExchangeController::Decision decision = ExchangeController::Decision::raise;
     std::string                  branching;         ///< the ridge split there (refused); "" otherwise
     double                       load_factor = 0.;  ///< lambda / lambda_c of the last state
@@ -36,18 +36,18 @@ namespace pumpd::coupling
   /// Runs the states of one exchange for the tips in the box, the load factor relative to the
   /// first tip's critical load factor lambda_c; tip k advances at most allowed[k] and its trace
   /// ends on the other cracks faces[k] (crack_extraction.h; none if faces is empty); `arrives(path)`
-  /// says whether an increment reaches a hole or the outline (accepted whatever its length, as
+  /// says whether an increment reaches a hole or the outline (accepted whatever its length within the allowed advance, as
   /// one that reaches another crack's face).
   /// Progress (one line per state, the load factor in units of `unit`: the first tip's lambda_c,
   /// or the lambda_i of a nucleation) to `out`. The controller judges advances in units of
-  /// `length_scale` (the box's lengths over those of the controller's settings).
+  /// `advance_scale`: its minimum advance is the settings' times this.
   ExchangeOutcome run_exchange(const local::PdModel &model, const BoundaryTransfer &transfer,
                                ExchangeController &controller, const std::vector<TipState> &tips,
                                const std::vector<double> &allowed,
                                const std::vector<std::vector<geometry::Polyline>> &faces,
                                const std::function<bool(const geometry::Polyline &)> &arrives,
                                const PeridynamicsSettings &pd, std::ostream &out,
-                               const std::string &unit = "lambda_c", double length_scale = 1.);
+                               const std::string &unit = "lambda_c", double advance_scale = 1.);
 
   const char *to_text(ExchangeController::Decision decision);
 

@@ -575,11 +575,10 @@ namespace pumpd::coupling
           part.decision  = outcome.decision;
           part.branching = outcome.branching;
           // The controller judged the tip that went farthest; another tip of the box grows with it
-          // only by an advance the controller would accept on its own: one within the allowed
-          // advance that reaches a hole, the outline or another crack's face, or one at least the
-          // minimum advance.
-          const bool reaches = k < outcome.reaches.size() && outcome.reaches[k] &&
-                               outcome.increments[k].length() <= allowed[k];
+          // only by an advance the controller would accept on its own: one that reaches a hole,
+          // the outline or another crack's face (within its allowed advance, as every tip's is
+          // when the farthest one's is), or one at least the minimum advance.
+          const bool reaches = k < outcome.reaches.size() && outcome.reaches[k];
           const bool below   = !reaches && geometry::length(part.increment) <
                                              std::min(advance_scale * s.cycle.exchange.min_advance, 0.5 * allowed[k]) *
                                                (1. - 1e-12);

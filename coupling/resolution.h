@@ -13,14 +13,15 @@
 // horizon) and the radius of every hole the box reaches (BoxPolicy::smallest_hole_within_reach),
 // the path and the box at delta_k where it is coarser than delta, at delta where it is finer. A
 // doubled box must fit into the body, and its path must keep the clearance from the other
-// cracks' faces too (a finer box resolves them anyway). A doubled box takes half as many exchanges for the same
-// crack length; its path is that of the coarser horizon (the path converges with the horizon,
+// cracks' faces too (at the section's horizon and below, a trace that comes within a horizon of
+// a face ends on it and joins it). A doubled box takes half as many exchanges for the same crack
+// length; its path is that of the coarser horizon (the path converges with the horizon,
 // docs/ingraffea.md), so doubling is a choice of the speed/accuracy trade, off by default.
 // Each box is its own PD problem, so delta changes from one exchange to the next without the
 // ghost forces of a variable horizon within one body (Silling, Littlewood, Seleson 2015). The
 // box, its margin, the maximum advance per exchange and the near distance scale with delta_k, the
-// minimum advance where delta_k is coarser than delta (a finer box takes at least half its
-// allowed advance); the spacing is delta_k / m.
+// minimum advance where delta_k is coarser than delta (a finer box keeps the section's, capped at
+// half its allowed advance); the spacing is delta_k / m.
 #pragma once
 
 #include <functional>

@@ -211,16 +211,33 @@ TEST(GlobalLocal, TheOtherCrackGrowsAfterAJoinAndAResumedRunFindsTheJunction)
 // A tip that starts half a horizon below another crack's face (the T-junction scene, the notch's
 // tip 2 mm below the interior crack): the first PD state's ridge reaches the face, an advance
 // shorter than the minimum, and the tip joins that crack there rather than wait for a longer one
-// that cannot come.
+// that cannot come. Joined, it has no box in the next exchange.
 TEST(GlobalLocal, ATipHalfAHorizonBelowAnotherCracksFaceJoinsIt)
 {
-  auto p                = test::scene_file("prm/beam-t-junction.prm", "global_local_t_near");
+  auto p                 = test::scene_file("prm/beam-t-junction.prm", "global_local_t_near");
   p.scene.initial_cracks = "0.1016,0; 0.1016,0.0444 | 0.07,0.0464; 0.13,0.0464";
-  p.cycle.max_exchanges  = 1;
+  p.cycle.max_exchanges  = 2;
   const auto r           = run(p);
-  ASSERT_EQ(r.exchanges.size(), 1u);
+  ASSERT_GE(r.exchanges.size(), 1u);
+  EXPECT_EQ(r.exchanges[0].crack, 0u);
   EXPECT_EQ(r.exchanges[0].decision, "accept");
+  EXPECT_EQ(r.exchanges[0].substeps, 1u);
   EXPECT_NEAR(r.exchanges[0].advance, 0.002, 0.5 * p.pd.spacing());
+  for (const auto &e : r.exchanges)
+    EXPECT_FALSE(e.exchange == 1 && e.crack == 0) << "the joined tip grows no more";
   ASSERT_EQ(r.paths.size(), 2u);
   EXPECT_LT(distance_to_polyline(r.paths[0].back(), r.paths[1]), 1e-9) << "the notch ends on the interior crack's face";
+}
+
+// A doubled box keeps 3 doubled horizons from the other cracks' faces: in the T-junction scene
+// the notch's tip is 25.4 mm above the bottom edge (room for 3 horizons of 8 mm) but its doubled
+// path, 24 mm long, comes within 21 mm of the interior crack, so the first box keeps 4 mm.
+TEST(GlobalLocal, ADoubledBoxKeepsItsClearanceFromTheOtherCracks)
+{
+  auto p                           = test::scene_file("prm/beam-t-junction.prm", "");
+  p.cycle.max_exchanges            = 1;
+  p.cycle.resolution.max_doublings = 1;
+  const auto r                     = run(p);
+  ASSERT_GE(r.exchanges.size(), 1u);
+  EXPECT_EQ(r.exchanges[0].horizon, p.pd.horizon);
 }
