@@ -48,6 +48,7 @@ namespace pumpd::coupling
   std::pair<double, std::size_t> ray_to_cracks(geometry::Point from, geometry::Point e, double t_max,
                                                const std::vector<geometry::Polyline> &cracks, std::size_t skip)
   {
+    constexpr double vertex_slack = 1e-12; // of a segment's length
     std::pair<double, std::size_t> best{std::numeric_limits<double>::infinity(), skip};
     for (std::size_t c = 0; c < cracks.size(); ++c)
       {
@@ -61,8 +62,10 @@ namespace pumpd::coupling
             const double          den = geometry::cross(e, f);
             if (den == 0.)
               continue;
+            // A ray through a vertex the two segments share can round to u slightly above 1 on the
+            // first and slightly below 0 on the second: each segment takes a little more than itself.
             const double t = geometry::cross(v[k] - from, f) / den, u = geometry::cross(v[k] - from, e) / den;
-            if (t >= 0. && t <= t_max && u >= 0. && u <= 1. && t < best.first)
+            if (t >= 0. && t <= t_max && u >= -vertex_slack && u <= 1. + vertex_slack && t < best.first)
               best = {t, c};
           }
       }

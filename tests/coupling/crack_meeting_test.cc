@@ -25,6 +25,21 @@ TEST(CrackMeeting, RayMeetsTheOtherCrackOnly)
   EXPECT_TRUE(std::isinf(coupling::ray_to_cracks({0.03, 0.}, {-1., 0.}, 1., cracks, 0).first));  // its own crack
 }
 
+// A ray through the vertex two segments of the other crack share. These coordinates round u to
+// just above 1 on the first segment and just below 0 on the second, so exact bounds on u missed
+// the crack altogether.
+TEST(CrackMeeting, RayThroughASharedVertexMeetsTheCrack)
+{
+  const Point                           v{0.049328384584120616, 0.10557851026174232};
+  const std::vector<geometry::Polyline> other = {
+    {{0.016012536104192017, 0.018732760751607243}, v, {0.030618903049641228, 0.10436494731629831}}};
+  const Point from{0.18693648160765955, 0.1835767020715694};
+  const Point e = 1.7 * (v - from);
+  const auto [t, c] = coupling::ray_to_cracks(from, e, 1., other, 1);
+  EXPECT_EQ(c, 0u);
+  EXPECT_NEAR(t, 1. / 1.7, 1e-12);
+}
+
 TEST(CrackMeeting, FirstCrossingOfAPath)
 {
   const geometry::Polyline path = {{0.03, 0.}, {0.04, 0.005}, {0.06, 0.01}};
