@@ -452,29 +452,34 @@ namespace pumpd::local
   {
     // Row blocks at least m + 1 rows high: block b adds into its own rows and the first m + 1
     // rows of block b + 1 only (m rows of reach, one more where a ghost lane wraps past the row
-    // end), so all even blocks can run at once, then all odd blocks.
+    // end), so all even blocks can run at once, then all odd blocks. An even block first clears
+    // its own rows and those of the odd block after it, which no other even block touches: the
+    // threads meet once between the phases and once at the end.
     const std::size_t ny     = grid.ny();
     const std::size_t height = std::max<std::size_t>(grid.reach() + 1, (ny + 15) / 16);
     const std::size_t blocks = (ny + height - 1) / height;
+    const std::size_t row    = grid.stride();
     const std::size_t n      = s.fx.size();
     std::vector<double> dissipated(blocks, 0.);
+    const auto          forces = [&](std::size_t b) {
+      if (mat.parameters().compression == Compression::linear)
+        forces_in_rows<true>(s, b * height, std::min(ny, (b + 1) * height), dissipated[b]);
+      else
+        forces_in_rows<false>(s, b * height, std::min(ny, (b + 1) * height), dissipated[b]);
+    };
 #pragma omp parallel
     {
 #pragma omp for schedule(static)
-      for (std::size_t i = 0; i < n; ++i)
+      for (std::size_t b = 0; b < blocks; b += 2)
         {
-          s.fx[i] = 0.;
-          s.fy[i] = 0.;
+          const std::size_t cleared_end = b + 2 < blocks ? (b + 2) * height * row : n;
+          std::fill(s.fx.begin() + b * height * row, s.fx.begin() + cleared_end, 0.);
+          std::fill(s.fy.begin() + b * height * row, s.fy.begin() + cleared_end, 0.);
+          forces(b);
         }
-      for (std::size_t parity = 0; parity < 2; ++parity)
-        {
-#pragma omp for schedule(static)
-          for (std::size_t b = parity; b < blocks; b += 2)
-            if (mat.parameters().compression == Compression::linear)
-              forces_in_rows<true>(s, b * height, std::min(ny, (b + 1) * height), dissipated[b]);
-            else
-              forces_in_rows<false>(s, b * height, std::min(ny, (b + 1) * height), dissipated[b]);
-        }
+#pragma omp for schedule(static) nowait
+      for (std::size_t b = 1; b < blocks; b += 2)
+        forces(b);
     }
     for (double d : dissipated)
       s.dissipated += d;

@@ -10,6 +10,11 @@
 // pd.speedup_vs_neighbor_list (t_plain / t_1), each per m and as the minimum over m. Timings are
 // never pass/fail; asserted are only that no bond breaks and that both versions give the same
 // forces.
+//
+// The cycle's boxes are small (Case II: 65 x 65 nodes, m = 8), where the threads' meetings weigh
+// against the work between them: pd.thread_speedup_2_cycle_box is t_1 / t_2 of 100 dynamic
+// relaxation iterations on such a box, pd.thread_speedup_2_cycle_box_kernel that of one force
+// evaluation.
 #include <gtest/gtest.h>
 #include <omp.h>
 
@@ -21,6 +26,7 @@
 #include <tuple>
 #include <vector>
 
+#include "integrators.h"
 #include "metric.h"
 #include "model.h"
 
@@ -31,10 +37,10 @@ namespace
   constexpr double horizon    = 0.004;
   constexpr int    nodes_side = 400;
 
-  /// A 400 x 400 node box, side exactly 400 h, inside a body three times as wide: no free edges.
-  PdModel make_model(int m)
+  /// A box of nodes x nodes, side exactly nodes h, inside a body three times as wide: no free edges.
+  PdModel make_model(int m, int nodes = nodes_side)
   {
-    const double side = nodes_side * (horizon / m);
+    const double side = nodes * (horizon / m);
     Region       region;
     region.box          = {0., 0., side, side};
     region.body  = pumpd::geometry::Body(pumpd::geometry::Box{-side, -side, 2. * side, 2. * side});
@@ -259,4 +265,29 @@ TEST(PdKernel, ThroughputBesidePlainNeighbourList)
   metric("pd.bond_updates_per_s_per_core", std::min(m4.rate_1, m8.rate_1));
   metric("pd.thread_speedup_2", std::min(m4.thread_speedup, m8.thread_speedup));
   metric("pd.speedup_vs_neighbor_list", std::min(m4.plain_speedup, m8.plain_speedup));
+}
+
+TEST(PdKernel, ThreadSpeedupOnACycleSizedBox)
+{
+  const PdModel model = make_model(8, 65);
+  State         start = model.initial_state();
+  set_displacement(model, start);
+  const DynamicRelaxation relax(model, 1e-14, 100);
+  const auto              speedup = [&](auto &&step) {
+    omp_set_num_threads(1);
+    const Timing t1 = time_per_call(step);
+    omp_set_num_threads(2);
+    const Timing t2 = time_per_call(step);
+    std::printf("  1 thread %.3f ms, 2 threads %.3f ms (medians %.3f, %.3f)\n", 1e3 * t1.best, 1e3 * t2.best,
+                1e3 * t1.median, 1e3 * t2.median);
+    return t1.best / t2.best;
+  };
+  State        s      = start;
+  const double kernel = speedup([&] { model.compute_forces(s); });
+  const double relaxation = speedup([&] {
+    s = start;
+    EXPECT_EQ(relax.solve(s).iterations, 99u);
+  });
+  pumpd::test::metric("pd.thread_speedup_2_cycle_box_kernel", kernel);
+  pumpd::test::metric("pd.thread_speedup_2_cycle_box", relaxation);
 }
