@@ -4,6 +4,7 @@
 #include <deal.II/lac/vector.h>
 
 #include <cholmod.h>
+#include <omp.h>
 
 #include <stdexcept>
 #include <string>
@@ -52,6 +53,27 @@ namespace pumpd::global
       }
     };
 
+    /// CHOLMOD opens an OpenMP parallel region each time it clears, copies or assembles a
+    /// supernode: thousands per factorization of a global problem, each too small to pay for
+    /// waking a thread that waits passively (coupling/main.cc). While one lives, every parallel
+    /// region runs on the calling thread alone. The regions split loops without sums, so the
+    /// factor is the same either way.
+    class OpenMpOnOneThread
+    {
+    public:
+      OpenMpOnOneThread()
+        : levels(omp_get_max_active_levels())
+      {
+        omp_set_max_active_levels(0);
+      }
+      ~OpenMpOnOneThread() { omp_set_max_active_levels(levels); }
+      OpenMpOnOneThread(const OpenMpOnOneThread &)            = delete;
+      OpenMpOnOneThread &operator=(const OpenMpOnOneThread &) = delete;
+
+    private:
+      const int levels;
+    };
+
     /// The upper triangle of A in compressed columns: by symmetry, column j holds the entries
     /// (i, j), i <= j, of row j.
     void upper_triangle(const dealii::SparseMatrix<double> &A, Cholmod &cm)
@@ -85,7 +107,8 @@ namespace pumpd::global
   bool solve_cholesky(const dealii::SparseMatrix<double> &A, const dealii::Vector<double> &b,
                       dealii::Vector<double> &x)
   {
-    Cholmod cm;
+    const OpenMpOnOneThread one_thread;
+    Cholmod                 cm;
     upper_triangle(A, cm);
     cm.L = cholmod_analyze(cm.U, &cm.c);
     cm.check(cm.L, "the analysis (fill-reducing ordering)");
