@@ -383,6 +383,9 @@ namespace pumpd::local
   // j = i + off are contiguous, so the bond stretch, failure test and force vectorise; the
   // forces go to a small buffer first and are then added to i and subtracted from j (Newton 3).
   // A shortened bond under the linear law in compression is softened by nothing (x = 0).
+  // Only the lanes of a word that hold a column of the box are computed, in whole vectors of
+  // 8: the ghost columns' bonds do not exist and would only add zeros (a box 65 nodes wide has
+  // 65 real lanes in 2 words of 64).
   template <bool linear_in_compression>
   void PdModel::forces_in_rows(State &s, std::size_t row_begin, std::size_t row_end,
                                double &dissipated) const
@@ -392,6 +395,12 @@ namespace pumpd::local
     const double *ux = s.ux.data(), *uy = s.uy.data();
     double       *fx = s.fx.data(), *fy = s.fy.data();
     const std::size_t first_word = grid.reach() / 64, last_word = (grid.reach() + grid.nx() + 63) / 64;
+    const std::size_t m = grid.reach();
+    const auto        lanes = [&](std::size_t w) { // [begin, end) of word w's real columns, in 8s
+      const std::size_t first = 64 * w, begin = std::max(first, m) - first;
+      const std::size_t end = std::min(first + 64, m + grid.nx()) - first;
+      return std::pair{begin / 8 * 8, (end + 7) / 8 * 8};
+    };
 
     alignas(64) double gx[64], gy[64];
     for (std::size_t iy = row_begin; iy < row_end; ++iy)
@@ -406,8 +415,9 @@ namespace pumpd::local
               const std::size_t   i0    = iy * grid.stride() + 64 * w;
               const std::uint64_t dead  = bits[w];
               std::uint64_t       fresh = 0;
+              const auto [l0, l1]       = lanes(w);
 #pragma omp simd reduction(| : fresh) aligned(gx, gy : 64)
-              for (std::uint64_t l = 0; l < 64; ++l) // 64-bit lanes and masks: vectorises
+              for (std::uint64_t l = l0; l < l1; ++l) // 64-bit lanes and masks: vectorises
                 {
                   const std::size_t   i = i0 + l, j = i0 + l + off;
                   const double        S = ((ux[j] - ux[i]) * ex + (uy[j] - uy[i]) * ey) * inv_r;
@@ -420,13 +430,13 @@ namespace pumpd::local
                   gy[l] = F * ey;
                 }
 #pragma omp simd
-              for (int l = 0; l < 64; ++l)
+              for (std::size_t l = l0; l < l1; ++l)
                 {
                   fx[i0 + l] += gx[l];
                   fy[i0 + l] += gy[l];
                 }
 #pragma omp simd
-              for (int l = 0; l < 64; ++l)
+              for (std::size_t l = l0; l < l1; ++l)
                 {
                   fx[i0 + l + off] -= gx[l];
                   fy[i0 + l + off] -= gy[l];
