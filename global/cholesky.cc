@@ -54,10 +54,10 @@ namespace pumpd::global
     };
 
     /// CHOLMOD opens an OpenMP parallel region each time it clears, copies or assembles a
-    /// supernode: thousands per factorization of a global problem, each too small to pay for
-    /// waking a thread that waits passively (coupling/main.cc). While one lives, every parallel
-    /// region runs on the calling thread alone. The regions split loops without sums, so the
-    /// factor is the same either way.
+    /// supernode: one per supernode step, each too small to pay for waking a thread that waits
+    /// passively (coupling/main.cc). While one lives, every parallel region of the process runs
+    /// on one thread (libgomp's max-active-levels is process-wide). The regions split loops
+    /// without sums, so the factor is the same either way.
     class OpenMpOnOneThread
     {
     public:

@@ -29,7 +29,9 @@ namespace pumpd::local
     std::size_t size() const { return dx.size(); }
   };
 
-  /// The half stencil for horizon ratio m and the material's influence function.
+  /// The half stencil for horizon ratio m and the material's influence function. It depends on
+  /// nothing else (lengths in spacings), so it is integrated once per (m, influence function) in
+  /// a process and copied after: every PD state of a run builds a model with it.
   Stencil make_half_stencil(int m, const LiptonMaterial &material);
 
   class Lattice

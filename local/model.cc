@@ -394,8 +394,8 @@ namespace pumpd::local
     const double  x_break = 0.5 * mat.parameters().break_factor * mat.parameters().break_factor;
     const double *ux = s.ux.data(), *uy = s.uy.data();
     double       *fx = s.fx.data(), *fy = s.fy.data();
-    const std::size_t first_word = grid.reach() / 64, last_word = (grid.reach() + grid.nx() + 63) / 64;
-    const std::size_t m = grid.reach();
+    const std::size_t m          = grid.reach();
+    const std::size_t first_word = m / 64, last_word = (m + grid.nx() + 63) / 64;
     const auto        lanes = [&](std::size_t w) { // [begin, end) of word w's real columns, in 8s
       const std::size_t first = 64 * w, begin = std::max(first, m) - first;
       const std::size_t end = std::min(first + 64, m + grid.nx()) - first;
