@@ -48,7 +48,6 @@ namespace pumpd::coupling
   std::pair<double, std::size_t> ray_to_cracks(geometry::Point from, geometry::Point e, double t_max,
                                                const std::vector<geometry::Polyline> &cracks, std::size_t skip)
   {
-    constexpr double vertex_slack = 1e-12; // of a segment's length
     std::pair<double, std::size_t> best{std::numeric_limits<double>::infinity(), skip};
     for (std::size_t c = 0; c < cracks.size(); ++c)
       {
@@ -57,15 +56,19 @@ namespace pumpd::coupling
         const auto &v = cracks[c];
         for (std::size_t k = 0; k + 1 < v.size(); ++k)
           {
-            // from + t e = v_k + u f,  t in [0, t_max], u in [0, 1]
+            // from + t e = v_k + u f,  t in [0, t_max], u in [0, 1]. The segment meets the ray's
+            // line where its ends lie on opposite sides (or on it): the side of a vertex two
+            // segments share is the same number for both, so a ray through it meets one of them
+            // however it rounds (a test of u in [0, 1] can miss both).
+            const double side_0 = geometry::cross(e, v[k] - from), side_1 = geometry::cross(e, v[k + 1] - from);
+            if ((side_0 > 0. && side_1 > 0.) || (side_0 < 0. && side_1 < 0.))
+              continue;
             const geometry::Point f   = v[k + 1] - v[k];
             const double          den = geometry::cross(e, f);
             if (den == 0.)
               continue;
-            // A ray through a vertex the two segments share can round to u slightly above 1 on the
-            // first and slightly below 0 on the second: each segment takes a little more than itself.
-            const double t = geometry::cross(v[k] - from, f) / den, u = geometry::cross(v[k] - from, e) / den;
-            if (t >= 0. && t <= t_max && u >= -vertex_slack && u <= 1. + vertex_slack && t < best.first)
+            const double t = geometry::cross(v[k] - from, f) / den;
+            if (t >= 0. && t <= t_max && t < best.first)
               best = {t, c};
           }
       }

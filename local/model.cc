@@ -464,27 +464,30 @@ namespace pumpd::local
     // rows of block b + 1 only (m rows of reach, one more where a ghost lane wraps past the row
     // end), so all even blocks can run at once, then all odd blocks. An even block first clears
     // its own rows and those of the odd block after it, which no other even block touches: the
-    // threads meet once between the phases and once at the end.
-    const std::size_t ny     = grid.ny();
-    const std::size_t height = std::max<std::size_t>(grid.reach() + 1, (ny + 15) / 16);
-    const std::size_t blocks = (ny + height - 1) / height;
-    const std::size_t row    = grid.stride();
-    const std::size_t n      = s.fx.size();
+    // threads meet once between the phases and once at the end. The layout depends on the
+    // lattice alone (the sums, and so the results, not on the thread count): at most 16 blocks,
+    // a multiple of 4 where there are 4 or more, so that two threads share each phase evenly.
+    const std::size_t ny       = grid.ny();
+    const std::size_t possible = std::clamp<std::size_t>(ny / (grid.reach() + 1), 1, 16);
+    const std::size_t blocks   = possible >= 4 ? possible / 4 * 4 : possible;
+    const auto        first    = [&](std::size_t b) { return b * ny / blocks; }; // rows [first(b), first(b + 1))
+    const std::size_t row      = grid.stride();
+    const std::size_t n        = s.fx.size();
     std::vector<double> dissipated(blocks, 0.);
     const auto          forces = [&](std::size_t b) {
       if (mat.parameters().compression == Compression::linear)
-        forces_in_rows<true>(s, b * height, std::min(ny, (b + 1) * height), dissipated[b]);
+        forces_in_rows<true>(s, first(b), first(b + 1), dissipated[b]);
       else
-        forces_in_rows<false>(s, b * height, std::min(ny, (b + 1) * height), dissipated[b]);
+        forces_in_rows<false>(s, first(b), first(b + 1), dissipated[b]);
     };
 #pragma omp parallel
     {
 #pragma omp for schedule(static)
       for (std::size_t b = 0; b < blocks; b += 2)
         {
-          const std::size_t cleared_end = b + 2 < blocks ? (b + 2) * height * row : n;
-          std::fill(s.fx.begin() + b * height * row, s.fx.begin() + cleared_end, 0.);
-          std::fill(s.fy.begin() + b * height * row, s.fy.begin() + cleared_end, 0.);
+          const std::size_t cleared_end = b + 2 < blocks ? first(b + 2) * row : n;
+          std::fill(s.fx.begin() + first(b) * row, s.fx.begin() + cleared_end, 0.);
+          std::fill(s.fy.begin() + first(b) * row, s.fy.begin() + cleared_end, 0.);
           forces(b);
         }
 #pragma omp for schedule(static) nowait

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 #include "arrival.h"
 
@@ -38,6 +39,34 @@ TEST(CrackMeeting, RayThroughASharedVertexMeetsTheCrack)
   const auto [t, c] = coupling::ray_to_cracks(from, e, 1., other, 1);
   EXPECT_EQ(c, 0u);
   EXPECT_NEAR(t, 1. / 1.7, 1e-12);
+}
+
+// Rays aimed at the vertex two segments of a crack share, the crack crossing the ray's line
+// there, from random places and at angles down to 1e-6 rad between the ray and a segment: every
+// ray meets the crack, at the vertex (to the rounding of a crossing at that angle).
+TEST(CrackMeeting, EveryRayThroughASharedVertexMeetsTheCrack)
+{
+  std::mt19937                           random(2026);
+  std::uniform_real_distribution<double> unit(0., 1.);
+  const auto                             direction = [](double angle) { return Point{std::cos(angle), std::sin(angle)}; };
+  int                                    missed    = 0;
+  for (int n = 0; n < 100000; ++n)
+    {
+      const Point  v{0.2 * unit(random), 0.2 * unit(random)};
+      const double ray_angle = 2. * M_PI * unit(random);
+      // the crack comes in from the left of the ray's line and leaves to its right, each
+      // segment 1e-6 to 1 rad from it (log-uniform)
+      const double a_in  = std::pow(10., -6. + 6. * unit(random));
+      const double a_out = std::pow(10., -6. + 6. * unit(random));
+      const Point  in    = v - (0.05 * (0.1 + unit(random))) * direction(ray_angle - a_in);
+      const Point  out   = v + (0.05 * (0.1 + unit(random))) * direction(ray_angle - a_out);
+      const Point  from  = v - (0.1 * (0.1 + unit(random))) * direction(ray_angle);
+      const Point  e     = 1.7 * (v - from);
+      const auto [t, c]  = coupling::ray_to_cracks(from, e, 1., {{in, v, out}}, 1);
+      if (c != 0u || std::abs(t - 1. / 1.7) > 1e-6)
+        ++missed;
+    }
+  EXPECT_EQ(missed, 0);
 }
 
 TEST(CrackMeeting, FirstCrossingOfAPath)
