@@ -57,17 +57,16 @@ namespace pumpd::coupling
         for (std::size_t k = 0; k + 1 < v.size(); ++k)
           {
             // from + t e = v_k + u f,  t in [0, t_max], u in [0, 1]. The segment meets the ray's
-            // line where its ends lie on opposite sides (or on it): the side of a vertex two
-            // segments share is the same number for both, so a ray through it meets one of them
-            // however it rounds (a test of u in [0, 1] can miss both).
+            // line where its ends lie on opposite sides (or on it), at u = side_0 / (side_0 -
+            // side_1), which rounds into [0, 1]. The side of a vertex two segments share is the
+            // same number for both, so a ray through it meets one of them however it rounds (a
+            // test of u computed from the lines' intersection can miss both).
             const double side_0 = geometry::cross(e, v[k] - from), side_1 = geometry::cross(e, v[k + 1] - from);
-            if ((side_0 > 0. && side_1 > 0.) || (side_0 < 0. && side_1 < 0.))
+            if ((side_0 > 0. && side_1 > 0.) || (side_0 < 0. && side_1 < 0.) || side_0 == side_1)
               continue;
-            const geometry::Point f   = v[k + 1] - v[k];
-            const double          den = geometry::cross(e, f);
-            if (den == 0.)
-              continue;
-            const double t = geometry::cross(v[k] - from, f) / den;
+            const double          u  = side_0 / (side_0 - side_1);
+            const geometry::Point at = v[k] + u * (v[k + 1] - v[k]);
+            const double          t  = geometry::dot(at - from, e) / geometry::dot(e, e);
             if (t >= 0. && t <= t_max && t < best.first)
               best = {t, c};
           }

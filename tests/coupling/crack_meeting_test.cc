@@ -43,13 +43,15 @@ TEST(CrackMeeting, RayThroughASharedVertexMeetsTheCrack)
 
 // Rays aimed at the vertex two segments of a crack share, the crack crossing the ray's line
 // there, from random places and at angles down to 1e-6 rad between the ray and a segment: every
-// ray meets the crack, at the vertex (to the rounding of a crossing at that angle).
+// ray meets the crack, at the vertex (to the rounding of a crossing at that angle). The same ray
+// moved 1e-7 m to the right misses the incoming segment alone, which ends at the vertex on its
+// left: the segment's line crosses the ray, the segment does not.
 TEST(CrackMeeting, EveryRayThroughASharedVertexMeetsTheCrack)
 {
   std::mt19937                           random(2026);
   std::uniform_real_distribution<double> unit(0., 1.);
   const auto                             direction = [](double angle) { return Point{std::cos(angle), std::sin(angle)}; };
-  int                                    missed    = 0;
+  int                                    missed = 0, met_beside = 0;
   for (int n = 0; n < 100000; ++n)
     {
       const Point  v{0.2 * unit(random), 0.2 * unit(random)};
@@ -65,8 +67,12 @@ TEST(CrackMeeting, EveryRayThroughASharedVertexMeetsTheCrack)
       const auto [t, c]  = coupling::ray_to_cracks(from, e, 1., {{in, v, out}}, 1);
       if (c != 0u || std::abs(t - 1. / 1.7) > 1e-6)
         ++missed;
+      const Point right = direction(ray_angle - 0.5 * M_PI);
+      if (std::isfinite(coupling::ray_to_cracks(from + 1e-7 * right, e, 1., {{in, v}}, 1).first))
+        ++met_beside;
     }
   EXPECT_EQ(missed, 0);
+  EXPECT_EQ(met_beside, 0);
 }
 
 TEST(CrackMeeting, FirstCrossingOfAPath)
