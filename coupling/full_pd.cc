@@ -71,18 +71,21 @@ namespace pumpd::coupling
     prm.add_parameter("Control", control,
                       "What the steps increase once bonds soften: the crack-mouth opening (stable through the "
                       "snap-back of the load-displacement curve; a servo in the relaxation moves the driven "
-                      "displacements; needs a crack with a mouth) or the control displacement d (the crack may run "
-                      "unstably).",
+                      "displacements; needs a crack with a mouth: without an initial crack, the one that forms, "
+                      "from when it forms) or the control displacement d (the crack may run unstably).",
                       Patterns::Selection("crack mouth opening|load point"));
     prm.add_parameter("Servo gain", servo_gain,
                       "Crack-mouth control: the fraction of the opening error a servo correction removes.",
                       Patterns::Double(1e-6, 1.));
     prm.add_parameter("Gauge distance", gauge_distance,
                       "Crack-mouth control: the opening is read between the nodes this far [m] either side of the "
-                      "crack's mouth, at most a quarter of the body's width; 0: one horizon.",
+                      "crack's mouth, at most a quarter of the body's width; 0: one horizon across an initial "
+                      "crack's mouth, four across a crack that forms (out of its softening zone).",
                       Patterns::Double(0.));
     prm.add_parameter("Stall steps", stall_steps,
-                      "Once the crack has grown, stop after this many steps in a row without growth.",
+                      "Once the crack has grown, stop after this many steps in a row without growth (under "
+                      "crack-mouth control, once the drive has also risen by (1 + Maximum increment)^n since the "
+                      "last growth).",
                       Patterns::Integer(1));
     prm.add_parameter("Output interval", output_interval, "Write pd_NNN.vtu every n steps (and the last).",
                       Patterns::Integer(1));
@@ -264,8 +267,8 @@ namespace pumpd::coupling
     CrackTraces  traces(scene.cracks, scene.body, on_boundary);
     const geometry::Polyline initial   = scene.cracks.empty() ? geometry::Polyline{} : traces.paths().front();
     const bool               has_mouth = !initial.empty() && scene.body.clearance(initial.front()) <= on_boundary;
-    const bool by_mouth = p.control == "crack mouth opening" && !initial.empty();
-    if (by_mouth && !has_mouth)
+    const bool by_mouth = p.control == "crack mouth opening";
+    if (by_mouth && !initial.empty() && !has_mouth)
       throw InvalidParameter("Control", p.control,
                              "crack-mouth control needs a crack with a mouth on the outline or a hole's rim; use load point");
 
@@ -361,17 +364,21 @@ namespace pumpd::coupling
     const double length0 = traces.length();
 
     // Crack-mouth opening w: the relative displacement of two gauge nodes either side of the
-    // mouth, along the normal to the crack's first segment (none without an initial crack).
+    // mouth, along the normal to the crack's first segment: the initial crack's, or a seeded
+    // crack's once it forms (none before). The default gauge distance is one horizon across a
+    // notch; across a crack that has just formed, whose softening zone still reaches a horizon or
+    // two from its mouth, four horizons (at most a quarter of the body's smaller side), so that
+    // the opening the servo holds is the body's elastic response, not that of softening bonds.
     Point       normal;
     std::size_t gauge_minus = model.nodes().front(), gauge_plus = gauge_minus;
-    if (by_mouth)
-      {
-        const Point  mouth_dir = (1. / geometry::norm(initial[1] - initial[0])) * (initial[1] - initial[0]);
-        const double gauge     = p.gauge_distance > 0. ? p.gauge_distance : pd.horizon;
-        normal                 = {mouth_dir.y, -mouth_dir.x};
-        gauge_minus            = model.nearest_node(initial[0] - gauge * normal);
-        gauge_plus             = model.nearest_node(initial[0] + gauge * normal);
-      }
+    const auto  place_gauges = [&](Point mouth, Point direction, double default_gauge) {
+      const double gauge = p.gauge_distance > 0. ? p.gauge_distance : default_gauge;
+      normal             = {direction.y, -direction.x};
+      gauge_minus        = model.nearest_node(mouth - gauge * normal);
+      gauge_plus         = model.nearest_node(mouth + gauge * normal);
+    };
+    if (by_mouth && !initial.empty())
+      place_gauges(initial[0], (1. / geometry::norm(initial[1] - initial[0])) * (initial[1] - initial[0]), pd.horizon);
     const auto mouth_opening = [&](const local::State &st) {
       return (st.ux[gauge_plus] - st.ux[gauge_minus]) * normal.x + (st.uy[gauge_plus] - st.uy[gauge_minus]) * normal.y;
     };
@@ -409,7 +416,7 @@ namespace pumpd::coupling
     if (initial.empty())
       out << "full PD: no initial crack: it is traced from where the damage first reaches the boundary, under "
              "load-point control"
-          << std::endl;
+          << (by_mouth ? " until it forms, then under the opening of its mouth" : "") << std::endl;
 
     FullPdResult result;
     result.nodes   = model.nodes().size();
@@ -427,6 +434,7 @@ namespace pumpd::coupling
     bool        elastic   = true;
     bool        grown     = false;
     std::size_t stalled   = 0;
+    double      pad_grown = 0.; // the drive at the last growth
     double      length    = length0;
     double      growth_t0 = 0.;
 
@@ -595,6 +603,23 @@ namespace pumpd::coupling
         const double new_length = initial.empty() ? geometry::length(result.path) : traces.length();
         growth                  = std::max(0., new_length - length);
         length                  = new_length;
+        // A seeded crack has a mouth once it forms: from here on d is its opening, read at gauges
+        // placed across its first direction (kept under load-point control where they do not open).
+        if (by_mouth && !servo_on && initial.empty() && seed && length > 0.)
+          {
+            place_gauges(seed->mouth, seed->direction,
+                         std::min(4. * pd.horizon, 0.25 * std::min(extent.width(), extent.height())));
+            if (mouth_opening(s) > 0.)
+              {
+                servo_on   = true;
+                pad_over_w = pad / mouth_opening(s);
+                d          = mouth_opening(s);
+                dd /= pad_over_w;
+                dd_prev /= pad_over_w;
+                out << "  the crack formed at its mouth " << to_text(seed->mouth)
+                    << ": from here on the steps are taken in the mouth's opening" << std::endl;
+              }
+          }
 
         // Next increment (the rule in full_pd.h).
         double z_tip = 0.;
@@ -606,7 +631,7 @@ namespace pumpd::coupling
             if (z_tip >= p.onset_stretch_ratio * (1. - 1e-3) || growth > 0.)
               {
                 elastic = false;
-                if (by_mouth)
+                if (by_mouth && !initial.empty())
                   {
                     // From here on d is the crack-mouth opening (w = d / (d/w)_0 in the elastic phase).
                     servo_on   = true;
@@ -631,7 +656,13 @@ namespace pumpd::coupling
             growth_t0 = seconds_since(t0);
           }
         stalled = grown && growth == 0. ? stalled + 1 : 0;
-        if (stop.empty() && stalled >= p.stall_steps)
+        if (growth > 0.)
+          pad_grown = pad;
+        // Under the servo the opening also grows by softening alone: the crack has stopped only
+        // once the drive, too, has risen as far as that many of the largest steps would take it.
+        const bool drive_rose =
+          !servo_on || pad >= pad_grown * std::pow(1. + p.max_increment, double(p.stall_steps));
+        if (stop.empty() && stalled >= p.stall_steps && drive_rose)
           stop = "the crack stopped growing (" + std::to_string(stalled) + " steps without growth)";
 
         step.displacement  = pad;

@@ -24,7 +24,8 @@
 // boundary (damage at least the crack threshold, a horizon clear of the prescribed regions and
 // no-fail zones), along the direction to the damage-weighted centroid of the crack nodes within
 // three horizons of it; mouth and direction follow the damage until the crack is a horizon long.
-// Its steps are taken in d (the mouth is not known before it forms). The run stops where every tip
+// Its steps are taken in d until it forms (the mouth is not known before), then, under crack-mouth
+// control (below), in the opening of the mouth where it formed. The run stops where every tip
 // has reached a hole (within the hole margin) or the outline, where a tip joins another crack, where
 // the cracks stop growing for good, or where d reaches its maximum. The crack advance of a step is
 // that of every crack together.
@@ -56,10 +57,14 @@
 // crack mouth opening` the steps above are taken in the crack-mouth opening w instead (phase 1
 // stays under d; w is proportional to it there), which grows monotonically along the whole path.
 // The opening is read between two gauge nodes one `gauge distance` either side of the first
-// crack's mouth (normal to its first segment). A servo inside the relaxation (local::Servo) moves
-// the driven displacements whenever |w - w*| exceeds a tenth of the step: by gain (d/w)_0 (w* - w),
-// and the whole body with them along the secant mode u_0 / d_0 ((d, u)_0 the last accepted
-// state); the relaxation settles the rest.
+// crack's mouth (normal to its first segment; by default one horizon across an initial crack,
+// four across a crack that forms, whose softening zone still reaches past one or two). A servo
+// inside the relaxation (local::Servo) moves the driven displacements whenever |w - w*| exceeds a
+// tenth of the step: by gain (d/w)_0 (w* - w), and the whole body with them along the secant mode
+// u_0 / d_0 ((d, u)_0 the last accepted state); the relaxation settles the rest. The opening also
+// grows while bonds ahead of the tip soften and the crack does not, so under this control a crack
+// counts as stopped only once the drive, too, has risen by (1 + maximum increment)^(stall steps)
+// since the crack last grew.
 #pragma once
 
 #include <cstddef>
