@@ -653,7 +653,7 @@ namespace pumpd::coupling
         if (growth > 0. && !grown)
           {
             grown     = true;
-            growth_t0 = seconds_since(t0);
+            growth_t0 = std::chrono::duration<double>(t_step - t0).count(); // the growth rate counts this step
           }
         stalled = grown && growth == 0. ? stalled + 1 : 0;
         if (growth > 0.)
@@ -686,9 +686,10 @@ namespace pumpd::coupling
           tracing += (tracing.empty() ? "" : "; ") + inc.stop_reason;
 
         // ETA: growth rate against the tip's clearance once the crack grows, else the
-        // displacement still to go.
+        // displacement still to go (unknown without a largest displacement).
         const double elapsed = seconds_since(t0);
-        double       eta     = pad > 0. && std::isfinite(d_max) ? elapsed / pad * (d_max - pad) : 0.;
+        double       eta     = pad > 0. && std::isfinite(d_max) ? elapsed / pad * (d_max - pad)
+                                                                : std::numeric_limits<double>::quiet_NaN();
         if (grown && length > length0)
           {
             const double left = std::max(0., scene.body.clearance(result.path.back()) - settings.growth.hole_margin);
@@ -701,7 +702,9 @@ namespace pumpd::coupling
             << step.iterations << (step.converged ? "" : " (not converged)")
             << (step.repeats ? "  repeats " + std::to_string(step.repeats) : "")
             << (elastic ? "  elastic, Z_tip " + text(z_tip) : "") << "  " << std::fixed << std::setprecision(1)
-            << step.seconds << " s  ETA ~" << std::setprecision(0) << eta << " s" << std::defaultfloat
+            << step.seconds << " s  ETA " << std::setprecision(0)
+            << (std::isfinite(eta) ? "~" + std::to_string(std::lround(eta)) + " s" : std::string("unknown before growth"))
+            << std::defaultfloat
             << std::setprecision(6) << (growth > 0. ? "  (tracing: " + tracing + ")" : "") << std::endl;
         if (!stop.empty())
           {

@@ -5,6 +5,7 @@
 // crack cracks at its corner, and its elastic state is in equilibrium (the XFEM's stiffness).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -173,7 +174,9 @@ TEST(FullPd, BadInputIsRefused)
 // The L-panel without a pre-crack (prm/l-panel-initiation.prm) at delta = 16 mm, m = 2 (h = 8 mm,
 // ~2900 nodes): full PD forms its own crack, traced from the boundary point nearest the most damaged
 // node there (full_pd.h). Its mouth lies within a horizon of the re-entrant corner, the crack grows
-// to the left, into the panel, and not down into the held leg.
+// to the left, into the panel, and not down into the held leg. Once it has formed, the steps are
+// taken in the opening of its mouth (the default control): the opening rises at every step and the
+// crack grows on from the length it formed with.
 TEST(FullPd, WithoutACrackTheLPanelCracksAtItsCorner)
 {
   auto p                    = test::scene_file("prm/l-panel-initiation.prm", "full_pd_lpanel");
@@ -192,6 +195,15 @@ TEST(FullPd, WithoutACrackTheLPanelCracksAtItsCorner)
   EXPECT_LE(mouth_err, 1.);
   EXPECT_LT(r.path.back().x, corner.x - 2. * p.pd.horizon);
   EXPECT_GE(r.path.back().y, corner.y - p.pd.horizon);
+
+  const auto formed =
+    std::find_if(r.steps.begin(), r.steps.end(), [](const FullPdStep &st) { return st.crack_length > 0.; });
+  ASSERT_NE(formed, r.steps.end());
+  ASSERT_GT(r.steps.end() - formed, 2);
+  EXPECT_GT(formed->mouth_opening, 0.);
+  for (auto st = formed + 1; st != r.steps.end(); ++st)
+    EXPECT_GT(st->mouth_opening, (st - 1)->mouth_opening) << "step " << st->step;
+  EXPECT_GT(r.steps.back().crack_length, formed->crack_length + 2. * p.pd.horizon);
 }
 
 // The L-panel's first, elastic state against the global problem: full PD of the whole panel at
