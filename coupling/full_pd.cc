@@ -80,12 +80,13 @@ namespace pumpd::coupling
     prm.add_parameter("Gauge distance", gauge_distance,
                       "Crack-mouth control: the opening is read between the nodes this far [m] either side of the "
                       "crack's mouth, at most a quarter of the body's width; 0: one horizon across an initial "
-                      "crack's mouth, four across a crack that forms (out of its softening zone).",
+                      "crack's mouth, four across a crack that forms (out of its softening zone; at most a quarter "
+                      "of the body's smaller side).",
                       Patterns::Double(0.));
     prm.add_parameter("Stall steps", stall_steps,
-                      "Once the crack has grown, stop after this many steps in a row without growth (under "
-                      "crack-mouth control, once the drive has also risen by (1 + Maximum increment)^n since the "
-                      "last growth).",
+                      "Once the crack has grown, stop after this many steps in a row without growth (once the "
+                      "steps are taken in the crack-mouth opening, only when the drive has also risen by (1 + "
+                      "Maximum increment)^n since the last growth).",
                       Patterns::Integer(1));
     prm.add_parameter("Output interval", output_interval, "Write pd_NNN.vtu every n steps (and the last).",
                       Patterns::Integer(1));
@@ -125,7 +126,8 @@ namespace pumpd::coupling
                     "must be in [Minimum increment, Maximum increment]");
       if (p.gauge_distance > 0.25 * o.width())
         throw InvalidParameter("Gauge distance", text(p.gauge_distance),
-                               "must be in [0, a quarter of the body's width] m (0: one horizon)");
+                               "must be in [0, a quarter of the body's width] m (0: one horizon across an "
+                               "initial crack, four across a crack that forms)");
       if (!scene.conditions.tractions.empty())
         throw InvalidParameter("Traction", scene.conditions.tractions.front().place.name,
                                "full PD drives a scene by one displacement: tractions cannot be applied (prescribe a "
@@ -416,7 +418,8 @@ namespace pumpd::coupling
     if (initial.empty())
       out << "full PD: no initial crack: it is traced from where the damage first reaches the boundary, under "
              "load-point control"
-          << (by_mouth ? " until it forms, then under the opening of its mouth" : "") << std::endl;
+          << (by_mouth ? " until it forms, then under the opening of its mouth (if the gauges across it open)" : "")
+          << std::endl;
 
     FullPdResult result;
     result.nodes   = model.nodes().size();
@@ -429,6 +432,7 @@ namespace pumpd::coupling
     // pad: the drive's displacement.
     double      d = 0., dd_prev = 0., pad = 0., pad_prev = 0.;
     bool        servo_on   = false;
+    bool        gauges_tried = false; // across a seeded crack's mouth
     double      pad_over_w = 0.; // (d/w)_0 of the servo
     double      dd = 0.01 * (p.max_displacement > 0. ? p.max_displacement : 1e-2 * scene.body.bounding_box().width());
     bool        elastic   = true;
@@ -604,12 +608,18 @@ namespace pumpd::coupling
         growth                  = std::max(0., new_length - length);
         length                  = new_length;
         // A seeded crack has a mouth once it forms: from here on d is its opening, read at gauges
-        // placed across its first direction (kept under load-point control where they do not open).
-        if (by_mouth && !servo_on && initial.empty() && seed && length > 0.)
+        // placed across its first direction. Tried once, in the step it forms in: where the gauges
+        // did not open over that step, the run stays under load-point control.
+        if (by_mouth && !gauges_tried && initial.empty() && seed && length > 0.)
           {
+            gauges_tried = true;
             place_gauges(seed->mouth, seed->direction,
                          std::min(4. * pd.horizon, 0.25 * std::min(extent.width(), extent.height())));
-            if (mouth_opening(s) > 0.)
+            if (mouth_opening(s) <= std::max(0., mouth_opening(saved)))
+              out << "  the crack formed at " << to_text(seed->mouth)
+                  << ", but the gauges across its mouth did not open: it grows under load-point control"
+                  << std::endl;
+            else
               {
                 servo_on   = true;
                 pad_over_w = pad / mouth_opening(s);
@@ -688,7 +698,7 @@ namespace pumpd::coupling
         // ETA: growth rate against the tip's clearance once the crack grows, else the
         // displacement still to go (unknown without a largest displacement).
         const double elapsed = seconds_since(t0);
-        double       eta     = pad > 0. && std::isfinite(d_max) ? elapsed / pad * (d_max - pad)
+        double       eta     = pad > 0. && std::isfinite(d_max) ? elapsed / pad * std::max(0., d_max - pad)
                                                                 : std::numeric_limits<double>::quiet_NaN();
         if (grown && length > length0)
           {
@@ -703,7 +713,8 @@ namespace pumpd::coupling
             << (step.repeats ? "  repeats " + std::to_string(step.repeats) : "")
             << (elastic ? "  elastic, Z_tip " + text(z_tip) : "") << "  " << std::fixed << std::setprecision(1)
             << step.seconds << " s  ETA " << std::setprecision(0)
-            << (std::isfinite(eta) ? "~" + std::to_string(std::lround(eta)) + " s" : std::string("unknown before growth"))
+            << (std::isfinite(eta) ? "~" + std::to_string(std::lround(eta)) + " s"
+                                   : std::string("unknown before growth"))
             << std::defaultfloat
             << std::setprecision(6) << (growth > 0. ? "  (tracing: " + tracing + ")" : "") << std::endl;
         if (!stop.empty())

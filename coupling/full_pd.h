@@ -25,7 +25,8 @@
 // no-fail zones), along the direction to the damage-weighted centroid of the crack nodes within
 // three horizons of it; mouth and direction follow the damage until the crack is a horizon long.
 // Its steps are taken in d until it forms (the mouth is not known before), then, under crack-mouth
-// control (below), in the opening of the mouth where it formed. The run stops where every tip
+// control (below), in the opening of the mouth where it formed, if the gauges across that mouth
+// opened over the step in which it formed (else in d to the end). The run stops where every tip
 // has reached a hole (within the hole margin) or the outline, where a tip joins another crack, where
 // the cracks stop growing for good, or where d reaches its maximum. The crack advance of a step is
 // that of every crack together.
@@ -62,9 +63,10 @@
 // inside the relaxation (local::Servo) moves the driven displacements whenever |w - w*| exceeds a
 // tenth of the step: by gain (d/w)_0 (w* - w), and the whole body with them along the secant mode
 // u_0 / d_0 ((d, u)_0 the last accepted state); the relaxation settles the rest. The opening also
-// grows while bonds ahead of the tip soften and the crack does not, so under this control a crack
-// counts as stopped only once the drive, too, has risen by (1 + maximum increment)^(stall steps)
-// since the crack last grew.
+// grows while bonds ahead of the tip soften and the crack does not, so under this control (with an
+// initial crack or a formed one) a crack counts as stopped only once the drive, too, has risen by
+// (1 + maximum increment)^(stall steps) since the crack last grew; a drive that keeps falling
+// without growth runs to the maximum steps.
 #pragma once
 
 #include <cstddef>
@@ -99,8 +101,8 @@ namespace pumpd::coupling
     unsigned int max_steps           = 400;
     std::string  control             = "crack mouth opening";
     double       servo_gain          = 1.;    ///< the fraction of the opening error one correction removes
-    double       gauge_distance      = 0.;    ///< [m]; 0: one horizon
-    unsigned int stall_steps         = 15;    ///< no growth for this many steps after it began: stop
+    double       gauge_distance      = 0.;    ///< [m]; 0: one horizon (an initial crack), four (a crack that forms)
+    unsigned int stall_steps         = 15;    ///< no growth for this many steps after it began: stop (Control)
     unsigned int output_interval     = 10;    ///< pd_*.vtu every n steps (and the last)
     double       equilibrium_error   = 5e-3;  ///< relative displacement error the relaxation leaves at most
 

@@ -175,8 +175,9 @@ TEST(FullPd, BadInputIsRefused)
 // ~2900 nodes): full PD forms its own crack, traced from the boundary point nearest the most damaged
 // node there (full_pd.h). Its mouth lies within a horizon of the re-entrant corner, the crack grows
 // to the left, into the panel, and not down into the held leg. Once it has formed, the steps are
-// taken in the opening of its mouth (the default control): the opening rises at every step and the
-// crack grows on from the length it formed with.
+// taken in the opening of its mouth (the default control): gauges are placed across it, the opening
+// rises at every step, every state relaxes to equilibrium, and the crack grows on from the length
+// it formed with.
 TEST(FullPd, WithoutACrackTheLPanelCracksAtItsCorner)
 {
   auto p                    = test::scene_file("prm/l-panel-initiation.prm", "full_pd_lpanel");
@@ -202,7 +203,10 @@ TEST(FullPd, WithoutACrackTheLPanelCracksAtItsCorner)
   ASSERT_GT(r.steps.end() - formed, 2);
   EXPECT_GT(formed->mouth_opening, 0.);
   for (auto st = formed + 1; st != r.steps.end(); ++st)
-    EXPECT_GT(st->mouth_opening, (st - 1)->mouth_opening) << "step " << st->step;
+    {
+      EXPECT_GT(st->mouth_opening, (st - 1)->mouth_opening) << "step " << st->step;
+      EXPECT_TRUE(st->converged) << "step " << st->step;
+    }
   EXPECT_GT(r.steps.back().crack_length, formed->crack_length + 2. * p.pd.horizon);
 }
 
