@@ -441,6 +441,15 @@ namespace pumpd::coupling
     double      pad_grown = 0.; // the drive at the last growth
     double      length    = length0;
     double      growth_t0 = 0.;
+    // From here on d is the crack-mouth opening of state st: the servo holds it, with the drive's
+    // displacement per unit opening (d/w)_0 of st, and the increments are taken in it.
+    const auto steps_in_opening = [&](const local::State &st) {
+      servo_on   = true;
+      pad_over_w = pad / mouth_opening(st);
+      d          = mouth_opening(st);
+      dd /= pad_over_w;
+      dd_prev /= pad_over_w;
+    };
 
     for (std::size_t n = 1;; ++n)
       {
@@ -621,11 +630,7 @@ namespace pumpd::coupling
                   << std::endl;
             else
               {
-                servo_on   = true;
-                pad_over_w = pad / mouth_opening(s);
-                d          = mouth_opening(s);
-                dd /= pad_over_w;
-                dd_prev /= pad_over_w;
+                steps_in_opening(s);
                 out << "  the crack formed at its mouth " << to_text(seed->mouth)
                     << ": from here on the steps are taken in the mouth's opening" << std::endl;
               }
@@ -642,13 +647,7 @@ namespace pumpd::coupling
               {
                 elastic = false;
                 if (by_mouth && !initial.empty())
-                  {
-                    // From here on d is the crack-mouth opening (w = d / (d/w)_0 in the elastic phase).
-                    servo_on   = true;
-                    pad_over_w = pad / mouth_opening(s);
-                    d          = mouth_opening(s);
-                    dd_prev /= pad_over_w;
-                  }
+                  steps_in_opening(s); // w = d / (d/w)_0 in the elastic phase
                 dd = p.first_increment * d;
               }
             else
