@@ -41,7 +41,8 @@ namespace pumpd::coupling
                       Patterns::Double(0.));
     prm.add_parameter("No-fail radius in horizons", no_fail_horizons,
                       "Bonds within this many horizons of a point condition or pad stay linear elastic (a no-fail "
-                      "zone: the pads would crush otherwise); 0: none.",
+                      "zone: the pads would crush otherwise), at most a quarter of the body's smaller side (so "
+                      "that a crack can still run towards the pad of a slender beam); 0: none.",
                       Patterns::Double(0., 1000.));
     prm.add_parameter("Onset stretch ratio", onset_stretch_ratio,
                       "The elastic phase jumps to the displacement where the largest stretch ratio Z near the tip "
@@ -231,6 +232,10 @@ namespace pumpd::coupling
       return Seed{mouth, lattice.position(*best), (1. / geometry::norm(moment)) * moment};
     }
 
+    /// Thrown by the servo when the drive it needs leaves the range a softening body allows.
+    struct ServoLost
+    {};
+
     double peak_rss_mb()
     {
       rusage usage{};
@@ -274,11 +279,14 @@ namespace pumpd::coupling
       throw InvalidParameter("Control", p.control,
                              "crack-mouth control needs a crack with a mouth on the outline or a hole's rim; use load point");
 
-    Drive drive(scene, radius, pd.horizon);
-    if (p.no_fail_horizons > 0.)
+    Drive        drive(scene, radius, pd.horizon);
+    const double no_fail_radius =
+      std::min(p.no_fail_horizons * pd.horizon,
+               0.25 * std::min(scene.body.bounding_box().width(), scene.body.bounding_box().height()));
+    if (no_fail_radius > 0.)
       for (std::size_t r = 0; r < drive.regions.size(); ++r)
         if (drive.at_point[r])
-          drive.regions[r].elastic_margin = std::max(0., p.no_fail_horizons * pd.horizon - radius);
+          drive.regions[r].elastic_margin = std::max(0., no_fail_radius - radius);
     const local::PdModel model(pd.material(scene.material), pd.horizon, pd.horizon_over_spacing,
                                local::Region{scene.body, scene.body.bounding_box(), scene.cracks}, drive.regions);
     std::vector<local::RegionDisplacement> prescribed;
@@ -412,7 +420,7 @@ namespace pumpd::coupling
         << " m, m = " << pd.horizon_over_spacing << ", h = " << h << " m: " << model.nodes().size() << " nodes; "
         << prescribed.size() << " prescribed regions (" << prescribed_nodes << " nodes), "
         << (drive.pad ? "a loading pad" : "lambda-scaled displacements") << ", no-fail radius "
-        << p.no_fail_horizons * pd.horizon << " m (" << model.linear_bond_count()
+        << no_fail_radius << " m (" << model.linear_bond_count()
         << " linear bonds); relaxation tolerance " << tolerance << "; K_c = " << model.material().critical_sif()
         << " Pa m^1/2" << std::endl;
     if (initial.empty())
@@ -449,6 +457,27 @@ namespace pumpd::coupling
       d          = mouth_opening(st);
       dd /= pad_over_w;
       dd_prev /= pad_over_w;
+    };
+
+    // A tip within half a horizon of a no-fail zone has reached it: the zone's bonds do not break.
+    const auto no_fail_arrival = [&](const std::vector<geometry::Polyline> &cracks) -> std::string {
+      for (const auto &crack : cracks)
+        for (std::size_t end = 0; crack.size() > 1 && end < 2; ++end)
+          if (const Point tip = end == 0 ? crack.front() : crack.back(); scene.body.clearance(tip) > on_boundary)
+            for (std::size_t r = 0; r < drive.regions.size(); ++r)
+              if (drive.regions[r].elastic_margin >= 0. &&
+                  drive.regions[r].contains(tip, drive.regions[r].elastic_margin + 0.5 * pd.horizon))
+                return "a tip reached the no-fail zone of " + drive.place_name[r] + " at " + to_text(tip) +
+                       " (its bonds do not break: No-fail radius in horizons)";
+      return {};
+    };
+    // Back to the drive's displacement d, for good, from a state whose opening the servo could not
+    // hold.
+    const auto steps_in_drive = [&] {
+      servo_on = false;
+      d        = pad;
+      dd *= pad_over_w;
+      dd_prev *= pad_over_w;
     };
 
     for (std::size_t n = 1;; ++n)
@@ -521,11 +550,28 @@ namespace pumpd::coupling
                       st.uy[i] += share * saved.uy[i];
                     }
                   pad_new += move;
+                  // In a softening body the drive that holds a slightly larger opening stays
+                  // positive and below twice the last one; outside, the servo chases a state with
+                  // no equilibrium at this opening and would diverge.
+                  if (!(pad_new > 0. && pad_new < 2. * pad))
+                    throw ServoLost{};
                   drive_to(pad_new, st);
                   return std::abs(d_new - mouth_opening(st)) / d_new;
                 };
               }
-            const auto relaxed = relax.solve(s, servo);
+            local::RelaxationResult relaxed;
+            try
+              {
+                relaxed = relax.solve(s, servo);
+              }
+            catch (const ServoLost &)
+              {
+                out << "  step " << n << ": the servo lost the opening (the drive left (0, " << 2e3 * pad
+                    << "] mm): from here on the steps are taken in the drive's displacement, repeated\n";
+                s = saved;
+                steps_in_drive();
+                continue;
+              }
             step.iterations += relaxed.iterations;
             step.converged = relaxed.converged;
             result.node_steps += n_nodes * double(relaxed.iterations);
@@ -613,6 +659,8 @@ namespace pumpd::coupling
             result.path  = arrival.path;
             stop         = arrival.reason;
           }
+        if (stop.empty())
+          stop = no_fail_arrival(paths(result.path));
         const double new_length = initial.empty() ? geometry::length(result.path) : traces.length();
         growth                  = std::max(0., new_length - length);
         length                  = new_length;

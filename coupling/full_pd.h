@@ -9,7 +9,9 @@
 //   a point force -> a loading pad: the nodes within the support radius, displaced rigidly along
 //                    the force (PD specimens are loaded through pads under displacement control).
 // Bonds within `no-fail radius` of a point condition stay linear elastic: a support or pad
-// concentrates stress far beyond the PD strength (~K_c / sqrt(pi delta)) and would crush.
+// concentrates stress far beyond the PD strength (~K_c / sqrt(pi delta)) and would crush. The
+// radius is at most a quarter of the body's smaller side, so that in a slender beam the crack
+// can still run towards the pad.
 // Initial cracks start as broken bonds. The control variable d is the largest prescribed
 // displacement: the pad's displacement along its force (one point force), or lambda times the
 // largest value of the lambda-scaled displacement conditions. Tractions, or a point force together

@@ -2,7 +2,8 @@
 // starts at the notch and grows upwards (more than 1 cm, its end in the upper half-plane of the
 // initial tip); the outputs are written; crack-mouth-opening control traces the snap-back that
 // load-point control jumps; bad input is refused naming the parameter. The L-panel without a
-// crack cracks at its corner, and its elastic state is in equilibrium (the XFEM's stiffness).
+// crack cracks at its corner, and its elastic state is in equilibrium (the XFEM's stiffness). The
+// unnotched beam cracks up its mid-span to the pad's no-fail zone.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -208,6 +209,34 @@ TEST(FullPd, WithoutACrackTheLPanelCracksAtItsCorner)
       EXPECT_TRUE(st->converged) << "step " << st->step;
     }
   EXPECT_GT(r.steps.back().crack_length, formed->crack_length + 2. * p.pd.horizon);
+}
+
+// The unnotched beam (prm/unnotched-beam.prm: depth 5 cm, span 40 cm, a pad at mid-span on the top
+// edge) at delta = 8 mm, m = 4 (h = 2 mm, 5500 nodes), bonds linear in compression: the crack forms
+// at mid-span on the bottom edge and runs straight up, within the state it forms in, to the pad's
+// no-fail zone, where the run stops and says so. Ten horizons would put the whole depth under
+// mid-span in that zone; the radius is held to a quarter of the beam's depth, 12.5 mm.
+TEST(FullPd, AnUnnotchedBeamCracksUpItsMidSpanToThePad)
+{
+  auto p                    = test::scene_file("prm/unnotched-beam.prm", "");
+  p.method                  = "full-pd";
+  p.pd.horizon              = 0.008;
+  p.pd.horizon_over_spacing = 4;
+  p.pd.compression          = "linear";
+  p.full_pd.max_steps       = 60;
+  std::ostringstream log;
+  const auto         r = run_case(p, log);
+  std::cout << log.str();
+  const double mid_span = 0.22, depth = 0.05, no_fail_radius = 0.25 * depth;
+  ASSERT_GE(r.path.size(), 2u);
+  std::cout << "path " << geometry::to_text(r.path) << " (" << r.stop_reason << ")\n";
+  test::metric("fullpd.beam.mouth_from_mid_span_over_delta", std::abs(r.path.front().x - mid_span) / p.pd.horizon);
+  EXPECT_LE(std::abs(r.path.front().x - mid_span), 0.5 * p.pd.horizon);
+  EXPECT_EQ(r.path.front().y, 0.);
+  for (const auto &x : r.path)
+    EXPECT_LE(std::abs(x.x - mid_span), 0.5 * p.pd.horizon) << geometry::to_text(x);
+  EXPECT_NE(r.stop_reason.find("no-fail zone of load"), std::string::npos) << r.stop_reason;
+  EXPECT_GE(r.path.back().y, depth - no_fail_radius - p.pd.horizon);
 }
 
 // The L-panel's first, elastic state against the global problem: full PD of the whole panel at
