@@ -12,6 +12,8 @@
 #include <optional>
 #include <ostream>
 #include <sstream>
+#include <tuple>
+#include <utility>
 
 #include "arrival.h"
 #include "boundary_layer.h"
@@ -471,6 +473,23 @@ namespace pumpd::coupling
                        " (its bonds do not break: No-fail radius in horizons)";
       return {};
     };
+    // Bond-based PD's potential is even in the stretch: where bonds soften in compression too, the
+    // compressed side of a body without a notch (a bending specimen's) softens about as soon as the
+    // stretched side. Said when the crack forms, where bonds have softened in compression by then.
+    const auto note_compression = [&](const local::State &st) {
+      const auto  zc = model.compressive_stretch_ratio(st);
+      double      z  = 0.;
+      std::size_t at = 0;
+      for (std::size_t i : near_tip)
+        if (zc[i] > z)
+          std::tie(z, at) = std::pair{zc[i], i};
+      if (z >= 1.)
+        out << "  note: bonds have softened in compression too, up to Z = " << z << " at "
+            << to_text(model.lattice().position(at))
+            << " (Bond law in compression = softening): the crack may have started where the body is compressed, "
+               "or been drawn there; Bond law in compression = linear fails bonds in tension only"
+            << std::endl;
+    };
     // Back to the drive's displacement d, for good, from a state whose opening the servo could not
     // hold.
     const auto steps_in_drive = [&] {
@@ -662,6 +681,8 @@ namespace pumpd::coupling
         if (stop.empty())
           stop = no_fail_arrival(paths(result.path));
         const double new_length = initial.empty() ? geometry::length(result.path) : traces.length();
+        if (initial.empty() && length == 0. && new_length > 0.)
+          note_compression(s);
         growth                  = std::max(0., new_length - length);
         length                  = new_length;
         // A seeded crack has a mouth once it forms: from here on d is its opening, read at gauges

@@ -29,8 +29,9 @@
 // Its steps are taken in d until it forms (the mouth is not known before), then, under crack-mouth
 // control (below), in the opening of the mouth where it formed, if the gauges across that mouth
 // opened over the step in which it formed (else in d to the end). The run stops where every tip
-// has reached a hole (within the hole margin) or the outline, where a tip joins another crack, where
-// the cracks stop growing for good, or where d reaches its maximum. The crack advance of a step is
+// has reached a hole (within the hole margin) or the outline, where a tip joins another crack or
+// comes within half a horizon of a no-fail zone, where the cracks stop growing for good, or where d
+// reaches its maximum. The crack advance of a step is
 // that of every crack together.
 //
 // Displacement steps (the rule the method follows):
@@ -68,7 +69,9 @@
 // grows while bonds ahead of the tip soften and the crack does not, so under this control (with an
 // initial crack or a formed one) a crack counts as stopped only once the drive, too, has risen by
 // (1 + maximum increment)^(stall steps) since the crack last grew; a drive that keeps falling
-// without growth runs to the maximum steps.
+// without growth runs to the maximum steps. A servo that needs a drive outside (0, 2 d) (d the last
+// accepted drive) has no equilibrium to hold at that opening: the step is repeated in d, and the
+// steps stay in d from then on.
 #pragma once
 
 #include <cstddef>

@@ -154,6 +154,8 @@ namespace pumpd::local
     std::vector<double> damage(const State &s) const;
     /// Per node: Z = max over its existing bonds that soften (material.h) of |S| / S_c(|xi|).
     std::vector<double> stretch_ratio(const State &s) const;
+    /// Per node: the same over the bonds that shorten (zero where bonds do not soften in compression).
+    std::vector<double> compressive_stretch_ratio(const State &s) const;
     /// Per node: elastic energy density W(x).
     std::vector<double> energy_density(const State &s) const;
     /// Count of bonds of the half stencil between existing nodes that are not broken.

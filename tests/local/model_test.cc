@@ -337,6 +337,35 @@ TEST(PdModel, RigidMotionsGiveNoForce)
             << ", finite rotation " << finite_rotation / reference << "\n";
 }
 
+// Under a uniform strain e I every bond's stretch is e, so the largest stretch ratio is e over the
+// inflection stretch of the longest bond (the smallest S_c): 1/2 here. The compressive stretch
+// ratio counts the shortening bonds only (1/2 under -e, 0 under +e), and none under the linear law
+// in compression.
+TEST(PdModel, CompressiveStretchRatioCountsShorteningBondsOnly)
+{
+  const Region region = box_in_body();
+  MaterialParameters linear;
+  linear.compression = Compression::linear;
+  const PdModel lin(linear, delta, m, region), soft(MaterialParameters{}, delta, m, region);
+  const double  e = 0.5 * soft.material().inflection_stretch(max_bond_length(soft));
+  const auto    strained = [&](const PdModel &model, double strain) {
+    State s = model.initial_state();
+    for (std::size_t i : model.nodes())
+      {
+        const auto x = model.lattice().position(i);
+        s.ux[i]      = strain * x.x;
+        s.uy[i]      = strain * x.y;
+      }
+    return s;
+  };
+  const auto largest = [](const std::vector<double> &z) { return *std::max_element(z.begin(), z.end()); };
+  EXPECT_NEAR(largest(soft.stretch_ratio(strained(soft, -e))), 0.5, 1e-12);
+  EXPECT_NEAR(largest(soft.compressive_stretch_ratio(strained(soft, -e))), 0.5, 1e-12);
+  EXPECT_NEAR(largest(soft.stretch_ratio(strained(soft, e))), 0.5, 1e-12);
+  EXPECT_EQ(largest(soft.compressive_stretch_ratio(strained(soft, e))), 0.);
+  EXPECT_EQ(largest(lin.compressive_stretch_ratio(strained(lin, -e))), 0.);
+}
+
 // Under the linear law in compression (material.h) an equibiaxial shortening far past the break
 // stretch (every bond at S = -eps, 30 times the break stretch of the longest bond) leaves every
 // bond intact, dissipates nothing, damages no node and is linear: twice the shortening gives
