@@ -624,30 +624,26 @@ namespace pumpd::local
 
   std::vector<double> PdModel::stretch_ratio(const State &s) const
   {
-    const double        h          = grid.spacing();
-    const auto          inflection = inflection_stretches();
-    std::vector<double> z(grid.storage_size(), 0.);
-    for_each_existing_bond([&](std::size_t k, std::size_t i, std::size_t j) {
-      const double r = st.length[k] * h;
-      const double S = ((s.ux[j] - s.ux[i]) * st.ex[k] + (s.uy[j] - s.uy[i]) * st.ey[k]) / r;
-      const double ratio = mat.softens(S) ? std::abs(S) / inflection[k] : 0.;
-      z[i] = std::max(z[i], ratio);
-      z[j] = std::max(z[j], ratio);
-    });
-    return z;
+    return largest_stretch_ratio(s, false);
   }
 
   std::vector<double> PdModel::compressive_stretch_ratio(const State &s) const
+  {
+    return largest_stretch_ratio(s, true);
+  }
+
+  std::vector<double> PdModel::largest_stretch_ratio(const State &s, bool shortening_only) const
   {
     const double        h          = grid.spacing();
     const auto          inflection = inflection_stretches();
     std::vector<double> z(grid.storage_size(), 0.);
     for_each_existing_bond([&](std::size_t k, std::size_t i, std::size_t j) {
-      const double r     = st.length[k] * h;
-      const double S     = ((s.ux[j] - s.ux[i]) * st.ex[k] + (s.uy[j] - s.uy[i]) * st.ey[k]) / r;
-      const double ratio = S < 0. && mat.softens(S) && !is_linear(k, i) ? -S / inflection[k] : 0.;
-      z[i]               = std::max(z[i], ratio);
-      z[j]               = std::max(z[j], ratio);
+      const double r       = st.length[k] * h;
+      const double S       = ((s.ux[j] - s.ux[i]) * st.ex[k] + (s.uy[j] - s.uy[i]) * st.ey[k]) / r;
+      const bool   counted = mat.softens(S) && (!shortening_only || (S < 0. && !is_linear(k, i)));
+      const double ratio   = counted ? std::abs(S) / inflection[k] : 0.;
+      z[i]                 = std::max(z[i], ratio);
+      z[j]                 = std::max(z[j], ratio);
     });
     return z;
   }

@@ -198,6 +198,9 @@ namespace pumpd::local
     std::vector<std::uint32_t> linear_k;    ///< no-fail bonds: stencil offset and node
     std::vector<std::size_t>   linear_i;
     void                       correct_linear_bonds(State &s) const;
+    /// Per node: the largest |S| / S_c over its bonds that soften (only those that shorten and are
+    /// not in a no-fail zone, if shortening_only).
+    std::vector<double> largest_stretch_ratio(const State &s, bool shortening_only) const;
     bool                       is_linear(std::size_t k, std::size_t i) const
     {
       return !linear_bits.empty() && bit(linear_bits, k * plane_words, i);
