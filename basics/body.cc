@@ -602,6 +602,11 @@ namespace pumpd::geometry
                                         [](const Loop &a, const Loop &b) { return a.area() < b.area(); });
     Loop              outline = *outer;
     loops.erase(outer);
+    for (const auto &loop : loops)
+      if (const Point p = loop.pieces.front().a; !outline.encloses(p))
+        throw InvalidParameter("Mesh boundary", text(p),
+                               "this boundary curve lies outside the largest one: the mesh has more than one piece, "
+                               "and a scene is one connected body");
     return Body(std::move(outline), std::move(loops));
   }
 } // namespace pumpd::geometry

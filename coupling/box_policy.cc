@@ -22,19 +22,22 @@ namespace pumpd::coupling
     require_positive("PD spacing", s.spacing);
     require_range("Box tip position", s.behind, 0.05, 0.95, "must be in [0.05, 0.95] (fraction of the box side)");
     require_positive("Box margin", s.margin);
+    const Box &o = body.bounding_box();
+    if (s.margin >= std::min(o.width(), o.height()))
+      throw InvalidParameter("Box margin", to_text(s.margin),
+                             "must be less than the body's smaller side (" + to_text(std::min(o.width(), o.height())) +
+                               " m)");
     const double least = 4. * s.horizon + s.margin;
     if (!(s.size >= least))
-      throw InvalidParameter("Box size", std::to_string(s.size),
-                             "must be at least 4 horizons plus the box margin (" + std::to_string(least) +
+      throw InvalidParameter("Box size", to_text(s.size),
+                             "must be at least 4 horizons plus the Box margin (" + to_text(least) +
                                " m): a boundary layer on each side, a horizon of free lattice around the tip");
-    const Box &o = body.bounding_box();
     if (s.size > std::min(o.width(), o.height()))
-      throw InvalidParameter("Box size", std::to_string(s.size),
-                             "must not exceed the body's smaller side (" + std::to_string(std::min(o.width(), o.height())) +
+      throw InvalidParameter("Box size", to_text(s.size),
+                             "must not exceed the body's smaller side (" + to_text(std::min(o.width(), o.height())) +
                                " m)");
     if (s.max_size < s.size)
-      throw InvalidParameter("Maximum box size", std::to_string(s.max_size), "must be >= the box size " +
-                                                                              std::to_string(s.size) + " m");
+      throw InvalidParameter("Maximum box size", to_text(s.max_size), "must be >= the box size " + to_text(s.size) + " m");
   }
 
   bool BoxPolicy::keeps(const Box &box, Point tip, Point d) const

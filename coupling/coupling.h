@@ -3,6 +3,7 @@
 //
 //   scene.h               the specimen from the .prm and its mesh: body, conditions, cracks, report
 //   parameters.h          every section of a scene file, and run(): the method on the scene
+//     parameter_file.h      what deal.II does not check in a scene file: includes, entries set twice
 //   global_problem.h      XFEM on the whole body: tip states per unit load, the critical load
 //   initiation.h          where a crack starts in a body without one: the PD strength against sigma_1
 //   lefm_growth.h         LEFM crack growth (XFEM + maximum hoop stress, no PD)

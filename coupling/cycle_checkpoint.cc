@@ -26,6 +26,23 @@ namespace pumpd::coupling
     {
       return local::hdf5::read_array<double>(file, name, "cycle checkpoint");
     }
+
+    /// HDF5 prints its error stack to stderr by default; a file that is not a checkpoint is
+    /// reported by the exception alone.
+    class QuietHdf5Errors
+    {
+    public:
+      QuietHdf5Errors()
+      {
+        H5Eget_auto2(H5E_DEFAULT, &function, &data);
+        H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+      }
+      ~QuietHdf5Errors() { H5Eset_auto2(H5E_DEFAULT, function, data); }
+
+    private:
+      H5E_auto2_t function = nullptr;
+      void       *data     = nullptr;
+    };
   } // namespace
 
   void write_cycle_checkpoint(const std::string &path, const CycleState &state)
@@ -58,6 +75,7 @@ namespace pumpd::coupling
   CycleState read_cycle_checkpoint(const std::string &path)
   {
     fail_if(!std::filesystem::exists(path), path + " does not exist");
+    const QuietHdf5Errors quiet;
     const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
     fail_if(file < 0, "cannot open " + path);
     CycleState          s;

@@ -6,6 +6,7 @@
 #include <optional>
 #include <ostream>
 
+#include "error.h"
 #include "integrators.h"
 
 namespace pumpd::coupling
@@ -153,7 +154,10 @@ namespace pumpd::coupling
         r.decision            = controller.judge(increment.length() / advance_scale, allowed[farthest] / advance_scale,
                                                  r.reaches[farthest]);
         out << "    PD at " << std::setprecision(4) << lambda << " " << unit << ": " << relaxed.iterations
-            << " DR iterations, advance " << increment.length() << " m"
+            << " DR iterations"
+            << (relaxed.converged ? "" : " (not relaxed within Relaxation max iterations: residual " +
+                                           pumpd::to_text(relaxed.residual, 3) + ")")
+            << ", advance " << increment.length() << " m"
             << (tips.size() > 1 ? " (tip " + std::to_string(farthest) + " of the box)" : "") << " -> "
             << to_text(r.decision) << "\n"
             << std::setprecision(6);

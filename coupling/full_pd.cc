@@ -264,6 +264,9 @@ namespace pumpd::coupling
     const double a_t    = p.target_advance > 0. ? p.target_advance : pd.horizon;
     const double a_max  = p.max_advance > 0. ? p.max_advance : 4. * pd.horizon;
     const double d_max  = p.max_displacement > 0. ? p.max_displacement : std::numeric_limits<double>::infinity();
+    for (const auto &[name, length] : {std::pair{"Support radius", p.support_radius}, {"Gauge distance", p.gauge_distance}})
+      if (length > 0. && length < h)
+        throw InvalidParameter(name, text(length), "must be 0 or at least the PD spacing h = " + text(h) + " m");
     if (p.max_advance > 0. && p.max_advance < a_t)
       throw InvalidParameter("Maximum advance", text(p.max_advance),
                              "must be 0 or at least the target advance (" + text(a_t) + " m)");

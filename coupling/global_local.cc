@@ -287,7 +287,16 @@ namespace pumpd::coupling
         {
           if (checkpoint.empty())
             throw InvalidParameter("Resume", "true", "needs an output directory holding checkpoint.h5");
-          state = read_cycle_checkpoint(checkpoint);
+          try
+            {
+              state = read_cycle_checkpoint(checkpoint);
+            }
+          catch (const std::runtime_error &e)
+            {
+              throw InvalidParameter("Resume", "true",
+                                     std::string(e.what()) + " (needs the checkpoint.h5 a global-local run of this "
+                                                             "scene wrote in its output directory)");
+            }
           if (state.cracks.size() != cracks.size())
             throw InvalidParameter("Resume", "true",
                                    "the checkpoint holds " + std::to_string(state.cracks.size()) +

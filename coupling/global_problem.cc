@@ -10,6 +10,7 @@
 
 #include "elasticity.h"
 #include "error.h"
+#include "crack_network.h"
 #include "global_conditions.h"
 
 namespace pumpd::coupling
@@ -42,8 +43,44 @@ namespace pumpd::coupling
     prm.add_parameter("Reference load factor", reference_load_factor,
                       "The load factor lambda the problem is solved at; every field is then scaled (linear "
                       "elasticity), so it changes the results in their last bits only.",
-                      Patterns::Double(1e-300));
+                      Patterns::Double(1e-30, 1e30));
     prm.leave_subsection();
+  }
+
+  void check_tip_radius(const Scene &scene, const GlobalSettings &settings)
+  {
+    const auto  &box       = scene.body.bounding_box();
+    const double tolerance = 1e-8 * std::max(box.width(), box.height());
+    std::vector<global::Crack> cracks;
+    for (const auto &line : scene.cracks)
+      cracks.emplace_back(line, scene.body, tolerance);
+    global::join_touching(cracks, tolerance);
+    for (const auto &crack : cracks)
+      for (const auto &tip : crack.tips())
+        if (const double clearance = scene.body.clearance(tip.position); clearance <= settings.tip_radius)
+          throw InvalidParameter("Tip enrichment radius", to_text(settings.tip_radius),
+                                 "must be less than the distance from each initial tip to the body's outline and "
+                                 "holes (the tip at " +
+                                   to_text(tip.position) + " lies " + to_text(clearance) +
+                                   " m from it): the interaction integral's domain would cross that boundary");
+  }
+
+  void check_refinement(const Scene &scene, const GlobalSettings &settings, double max_cells)
+  {
+    double area = scene.body.outline().area();
+    for (const auto &hole : scene.body.holes())
+      area -= hole.area();
+    const double pi        = std::acos(-1.);
+    const double cells     = double(scene.mesh->n_active_cells());
+    const double r         = settings.refinement_radius;
+    const double refined   = std::min(area, pi * r * r + 2. * r * settings.refinement_trail);
+    const double estimated = cells + cells * refined / area * (std::pow(4., settings.refinement_levels) - 1.);
+    if (estimated > max_cells)
+      throw InvalidParameter("Refinement levels near the tip", std::to_string(settings.refinement_levels),
+                             "with Refinement radius = " + to_text(r) + " m and Refinement trail = " +
+                               to_text(settings.refinement_trail) + " m the mesh would have about " +
+                               to_text(estimated, 3) + " cells, more than Maximum cells = " + to_text(max_cells, 3) +
+                               ": fewer levels or a smaller radius");
   }
 
   GlobalProblem::GlobalProblem(const Scene &s, const GlobalSettings &g)
@@ -148,6 +185,14 @@ namespace pumpd::coupling
         const double g = (sifs[t].k1 * sifs[t].k1 + sifs[t].k2 * sifs[t].k2) / scene.material.effective_modulus();
         s.critical_load_factor = s.k1 > 0. ? lambda * std::sqrt(scene.material.fracture_energy / g)
                                            : std::numeric_limits<double>::infinity();
+        if (!std::isfinite(s.k1) || !std::isfinite(s.k2) || (s.k1 > 0. && !(s.critical_load_factor > 0.)) ||
+            std::isnan(s.critical_load_factor))
+          throw InvalidParameter("Boundary conditions", "the scene's loads",
+                                 "give K_I = " + to_text(s.k1) + ", K_II = " + to_text(s.k2) + " Pa m^1/2 and lambda_c = " +
+                                   to_text(s.critical_load_factor) + " at the tip " + to_text(s.position) +
+                                   ": not representable in double precision; keep the loads, Young's modulus, "
+                                   "Fracture energy and Global / Reference load factor near their physical sizes "
+                                   "(SI units)");
         states.push_back(s);
       }
     return states;

@@ -41,6 +41,16 @@ namespace pumpd::coupling
     void add_parameters(dealii::ParameterHandler &prm);
   };
 
+  /// Refuses a scene whose initial cracks have a tip closer to the body's boundary (outline or
+  /// hole) than the tip enrichment radius: the interaction integral's domain (Moes et al. 1999)
+  /// would cross a free edge whose normal has a component along the crack, and K would be wrong.
+  void check_tip_radius(const Scene &scene, const GlobalSettings &settings);
+
+  /// Refuses refinement settings whose refined mesh would exceed `max_cells` (Scene / Maximum
+  /// cells): the cells of the mean size within the refinement radius of a tip and its trail, each
+  /// split into 4^levels.
+  void check_refinement(const Scene &scene, const GlobalSettings &settings, double max_cells);
+
   /// A crack tip under the scene's loading.
   struct TipState
   {

@@ -158,6 +158,9 @@ namespace pumpd::coupling
       cracks.emplace_back(line, scene.body, tolerance);
     global::join_touching(cracks, tolerance);
     check_clearance(cracks, s.global.tip_radius);
+    if (const double least = 1e-4 * std::max(box.width(), box.height()); s.lefm.growth_increment < least)
+      throw InvalidParameter("Growth increment", to_text(s.lefm.growth_increment),
+                             "must be at least 1e-4 of the body's larger side (" + to_text(least) + " m)");
     GlobalProblem global(scene, s.global);
     Recorder      recorder(scene);
     CsvFile       table = recorder.table("load_steps.csv", "step,tip,x_m,y_m,crack_length_m,K_I_Pa_sqrt_m,K_II_Pa_sqrt_m,"

@@ -50,15 +50,26 @@ namespace
 
 int main(int argc, char **argv)
 {
-  const std::string arg   = argc > 1 ? argv[1] : "--help";
+  const std::string arg   = argc > 1 ? argv[1] : "";
   const bool        study = arg == "--study" && argc == 3;
   // deal.II on one thread (its assembly sums in one order: the same results on any machine).
   dealii::MultithreadInfo::set_thread_limit(1);
-  if (arg == "--help" || arg == "-h" || (argc > 2 && !study))
+  if ((arg == "--help" || arg == "-h") && argc == 2)
     {
       std::cout << usage;
-      return argc > 2 ? 1 : 0;
+      return 0;
     }
+  // Misuse: one line on stderr, the reason and the usage's first line.
+  const auto misuse = [](const std::string &why) {
+    std::cerr << "pumpd: " << why << "; " << std::string(usage).substr(0, std::string(usage).find('\n')) << "\n";
+    return 1;
+  };
+  if (argc == 1)
+    return misuse("no scene file");
+  if (arg.rfind("-", 0) == 0 && arg != "--study" && arg != "--print-parameters")
+    return misuse("unknown option " + arg);
+  if ((argc > 2 && !study) || (arg == "--study" && !study))
+    return misuse("wrong number of arguments");
   if (arg == "--print-parameters")
     {
       pumpd::coupling::Parameters p;

@@ -7,6 +7,7 @@
 
 #include "error.h"
 #include "nucleation.h"
+#include "parameter_file.h"
 
 namespace pumpd::coupling
 {
@@ -39,6 +40,7 @@ namespace pumpd::coupling
     Parameters               p;
     dealii::ParameterHandler prm;
     p.add_parameters(prm);
+    check_parameter_file(file);
     prm.parse_input(file);
     return p;
   }
@@ -54,6 +56,7 @@ namespace pumpd::coupling
 
   void run(const Parameters &p, std::ostream &out)
   {
+    make_output_directory("Scene / Output directory", p.scene.output_directory);
     if (p.method == "pd-edge-crack")
       {
         const auto r = run_edge_crack({p.pd.material(p.scene.material), p.pd, p.edge_crack, p.scene.output_directory}, out);
@@ -62,6 +65,11 @@ namespace pumpd::coupling
         return;
       }
     const Scene scene = build_scene(p.scene);
+    if (p.method != "full-pd")
+      {
+        check_tip_radius(scene, p.global);
+        check_refinement(scene, p.global, p.scene.max_cells);
+      }
     if (scene.cracks.empty() && p.method == "global-local")
       run_global_local_from_initiation(scene, p.global_local_settings(), p.initiation, out);
     else if (scene.cracks.empty() && p.method == "lefm-growth")

@@ -22,7 +22,7 @@ namespace pumpd::coupling
     prm.add_parameter("Bond break factor", break_factor,
                       "A bond fails for good beyond this multiple of its inflection stretch S_c = 1 / sqrt(2 beta "
                       "|xi|); the decks use 10.",
-                      Patterns::Double(1.));
+                      Patterns::Double(1., 1e6));
     prm.add_parameter("Bond law in compression", compression,
                       "A shortened bond softens and fails by Lipton's law, as a stretched one does (softening), or "
                       "stays linear elastic and never fails (linear): a body squeezed harder than it is pulled, "

@@ -11,6 +11,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -71,21 +72,25 @@ namespace pumpd::coupling
                       "(section Initiation), LEFM growth lists where one would start and stops.",
                       Patterns::Anything());
     prm.add_parameter("Output directory", output_directory,
-                      "Where the results go (created if missing).", Patterns::DirectoryName());
+                      "Where the results go (created if missing); empty: the run writes nothing.", Patterns::DirectoryName());
     prm.add_parameter("Reference path", reference_path,
                       "Optional CSV of a path to compare with (x,y [m] per line, # comments): copied to "
                       "reference_path.csv, distances printed. Empty: none.",
                       Patterns::Anything());
 
     prm.enter_subsection("Material");
-    prm.add_parameter("Young's modulus", material.youngs_modulus, "E [Pa].", Patterns::Double(1e-300));
+    prm.add_parameter("Young's modulus", material.youngs_modulus,
+                      "E [Pa] (SI units: from soft polymers, 1e3, to diamond, 1e12).", Patterns::Double(1e3, 1e13));
     prm.add_parameter("Poisson's ratio", material.poisson_ratio,
                       "nu. The methods with peridynamics need bond-based PD's value: 1/4 in plane strain, 1/3 in "
                       "plane stress.",
                       Patterns::Double(0., 0.4999));
-    prm.add_parameter("Fracture energy", material.fracture_energy, "Critical energy release rate G_c [J/m^2].",
-                      Patterns::Double(1e-300));
-    prm.add_parameter("Density", material.density, "rho [kg/m^3].", Patterns::Double(1e-300));
+    prm.add_parameter("Fracture energy", material.fracture_energy,
+                      "Critical energy release rate G_c [J/m^2] (SI units: from gels and glass, 1e-2, to tough "
+                      "metals, 1e6).",
+                      Patterns::Double(1e-3, 1e7));
+    prm.add_parameter("Density", material.density, "rho [kg/m^3] (SI units: from foams to the heaviest metals).",
+                      Patterns::Double(1., 1e5));
     prm.add_parameter("Plane strain", material.plane_strain, "true: plane strain; false: plane stress.", Patterns::Bool());
     prm.leave_subsection();
 
@@ -632,6 +637,50 @@ namespace pumpd::coupling
     }
   } // namespace
 
+  void make_output_directory(const std::string &entry, const std::string &directory)
+  {
+    if (directory.empty())
+      return;
+    std::error_code error;
+    std::filesystem::create_directories(directory, error);
+    if (!error && !std::filesystem::is_directory(directory))
+      error = std::make_error_code(std::errc::not_a_directory);
+    if (!error)
+      {
+        const std::string probe = directory + "/.pumpd-write-test";
+        if (!std::ofstream(probe))
+          error = std::make_error_code(std::errc::permission_denied);
+        std::error_code ignored;
+        std::filesystem::remove(probe, ignored);
+      }
+    if (error)
+      throw InvalidParameter(entry, directory,
+                             "cannot be used (" + error.message() +
+                               "): a folder this user can create and write to, or empty to write nothing");
+  }
+
+  namespace
+  {
+    /// A reference path must lie about the body (a path in millimetres, say, does not) and have a
+    /// length.
+    void check_reference_path(const std::string &file, const Scene &scene)
+    {
+      const auto &path = scene.reference_path;
+      if (path.empty())
+        return;
+      const auto  &box    = scene.body.bounding_box();
+      const double margin = 0.1 * std::hypot(box.width(), box.height());
+      for (const Point p : path)
+        if (!box.contains(p, margin))
+          throw InvalidParameter("Reference path", file,
+                                 "the point " + to_text(p) +
+                                   " lies outside the body's bounding box by more than a tenth of its diagonal (x,y in "
+                                   "metres, as the mesh)");
+      if (geometry::length(path) <= 0.)
+        throw InvalidParameter("Reference path", file, "has zero length: its points coincide");
+    }
+  } // namespace
+
   Scene build_scene(const SceneSettings &s)
   {
     Scene scene;
@@ -677,6 +726,7 @@ namespace pumpd::coupling
                      scene.report.displacement_sign);
         scene.report.displacement_name = trim(s.report_displacement);
       }
+    check_reference_path(s.reference_path, scene);
     return scene;
   }
 

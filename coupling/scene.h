@@ -96,6 +96,10 @@ namespace pumpd::coupling
     void add_parameters(dealii::ParameterHandler &prm);
   };
 
+  /// Creates the folder `directory` (nothing if it is empty: a run that writes nothing) before any
+  /// work; throws InvalidParameter naming `entry` if it cannot be created or written to.
+  void make_output_directory(const std::string &entry, const std::string &directory);
+
   /// Reads the mesh and builds the scene. Throws InvalidParameter naming the entry and what is
   /// allowed for every check in the header comment.
   Scene build_scene(const SceneSettings &settings);

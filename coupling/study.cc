@@ -58,7 +58,7 @@ namespace pumpd::coupling
       explicit Runs(const std::string &directory)
         : file(directory + "/runs.csv")
       {
-        fs::create_directories(directory);
+        make_output_directory("Study / Output directory", directory);
         for (const auto &r : read_records(file))
           if (r.status != "killed")
             by_key[r.key] = r;

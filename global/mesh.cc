@@ -343,6 +343,12 @@ namespace pumpd::global
       catch (const std::exception &e)
         {
           tria.clear();
+          // deal.II reads the cells of the physical groups only: a mesh without a Physical
+          // Surface has none.
+          if (std::string(e.what()).find("did not find any cells") != std::string::npos)
+            throw InvalidParameter("Mesh file", file,
+                                   "the mesh has no 2D cells that deal.II reads: name the body's surface with "
+                                   "Physical Surface(\"...\") = {...} in the .geo");
           throw InvalidParameter("Mesh file", file,
                                  "not a readable gmsh mesh (" + one_line(e.what()) + ")");
         }

@@ -98,13 +98,20 @@ namespace pumpd::local
                              "[" + std::to_string(b.x_min) + ", " + std::to_string(b.x_max) + "] x [" +
                                std::to_string(b.y_min) + ", " + std::to_string(b.y_max) + "]",
                              "needs x_min < x_max and y_min < y_max");
+    // Beyond this many nodes no machine holds the lattice; refused before its counts overflow.
+    const double most_nodes = 1e12;
+    if ((b.width() / h) * (b.height() / h) > most_nodes)
+      throw InvalidParameter("PD box", to_text(b.width()) + " x " + to_text(b.height()),
+                             "holds about " + to_text((b.width() / h) * (b.height() / h), 3) +
+                               " nodes at spacing h = " + to_text(h) + ", more than any machine can hold (at most " +
+                               to_text(most_nodes, 3) + "): a smaller box or a larger spacing");
     const auto count = [&](double length) { return std::size_t(std::floor(length / h + 1e-9)); };
     n_x = count(b.width());
     n_y = count(b.height());
     if (n_x < std::size_t(2 * m + 1) || n_y < std::size_t(2 * m + 1))
       throw InvalidParameter("PD box", std::to_string(b.width()) + " x " + std::to_string(b.height()),
                              "must hold at least 2 m + 1 = " + std::to_string(2 * m + 1) +
-                               " spacings each way (h = " + std::to_string(h) + ")");
+                               " spacings each way (h = " + to_text(h) + "): a smaller Horizon or a larger box");
     row_stride = (n_x + 2 * m + 63) / 64 * 64;
     x0         = b.x_min + 0.5 * (b.width() - n_x * h) + 0.5 * h;
     y0         = b.y_min + 0.5 * (b.height() - n_y * h) + 0.5 * h;

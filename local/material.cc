@@ -38,7 +38,7 @@ namespace pumpd::local
     require_positive("Density", p.density);
     require_positive("Horizon", delta);
     require_range("Bond break factor", p.break_factor, 1., 1e6,
-                  "must be >= 1 (a multiple of the inflection stretch)");
+                  "must be in [1, 1e6] (a multiple of the inflection stretch)");
 
     const double E  = p.youngs_modulus;
     const double nu = poisson_ratio();

@@ -167,9 +167,11 @@ TEST(FullPd, BadInputIsRefused)
                  "bond-based peridynamics has nu = 1/4 in plane strain");
   expect_invalid(run_with([](auto &p) { p.scene.initial_cracks = "0.2,0.05; 0.2,0.1"; }), "Control",
                  "crack-mouth control needs a crack with a mouth");
-  // A support region that holds no node: a support radius below half a spacing misses the lattice.
+  // A support radius below a spacing could miss the lattice; so could gauges closer than that.
   expect_invalid(run_with([](auto &p) { p.full_pd.support_radius = 0.001; p.full_pd.no_fail_horizons = 0.; }),
-                 "pin", "holds no PD node");
+                 "Support radius", "must be 0 or at least the PD spacing");
+  expect_invalid(run_with([](auto &p) { p.full_pd.gauge_distance = 0.001; }), "Gauge distance",
+                 "must be 0 or at least the PD spacing");
 }
 
 // The L-panel without a pre-crack (prm/l-panel-initiation.prm) at delta = 16 mm, m = 2 (h = 8 mm,

@@ -59,7 +59,7 @@ TEST(BadInput, HorizonAndSpacingPositive)
   expect_invalid([&] { make_model(delta, m, good_region(), p); }, "Young's modulus", "> 0");
   p                = MaterialParameters{};
   p.break_factor   = 0.5;
-  expect_invalid([&] { make_model(delta, m, good_region(), p); }, "Bond break factor", ">= 1");
+  expect_invalid([&] { make_model(delta, m, good_region(), p); }, "Bond break factor", "in [1, 1e6]");
 }
 
 // m < 2 must name "Horizon over spacing (m)", whether the lattice is built directly or through

@@ -1,0 +1,100 @@
+#include "parameter_file.h"
+
+#include <cctype>
+#include <filesystem>
+#include <map>
+#include <sstream>
+#include <vector>
+
+#include "error.h"
+#include "text.h"
+
+namespace pumpd::coupling
+{
+  namespace
+  {
+    /// The lines of a scene file as deal.II reads them: comments dropped, lines ending in a
+    /// backslash joined to the next; each with the number of its first line.
+    std::vector<std::pair<std::string, int>> logical_lines(const std::string &text)
+    {
+      std::vector<std::pair<std::string, int>> lines;
+      std::istringstream                       in(text);
+      std::string                              line, joined;
+      int                                      number = 0, first = 0;
+      while (std::getline(in, line))
+        {
+          ++number;
+          line = trim(line.substr(0, line.find('#')));
+          if (joined.empty())
+            first = number;
+          if (!line.empty() && line.back() == '\\')
+            {
+              joined += line.substr(0, line.size() - 1) + " ";
+              continue;
+            }
+          lines.emplace_back(trim(joined + line), first);
+          joined.clear();
+        }
+      return lines;
+    }
+
+    /// What follows `keyword` (deal.II takes it in lower or upper case) at the start of a line.
+    std::string starting(const std::string &line, const std::string &keyword)
+    {
+      std::string upper = keyword;
+      for (auto &c : upper)
+        c = char(std::toupper(c));
+      for (const auto &k : {keyword, upper})
+        if (line.rfind(k + " ", 0) == 0)
+          return trim(line.substr(k.size() + 1));
+      return {};
+    }
+
+    void check(const std::string &file, std::vector<std::string> &stack)
+    {
+      const auto text = file_contents(file);
+      if (!text)
+        throw InvalidParameter(stack.empty() ? "scene file" : "include", file,
+                               "not found, or not a readable regular file (the path of a .prm file, relative to the working directory)");
+      const auto canonical = std::filesystem::weakly_canonical(file).string();
+      for (const auto &open : stack)
+        if (open == canonical)
+          throw InvalidParameter("include", file,
+                                 "includes itself, directly or through the files it includes: a file may include "
+                                 "others, but not one that includes it");
+      stack.push_back(canonical);
+
+      std::vector<std::string>   section;
+      std::map<std::string, int> set_at; // "Section/Sub/entry" -> its line
+      for (const auto &[line, number] : logical_lines(*text))
+        {
+          if (const auto name = starting(line, "subsection"); !name.empty())
+            section.push_back(name);
+          else if ((line == "end" || line == "END") && !section.empty())
+            section.pop_back();
+          else if (const auto included = starting(line, "include"); !included.empty())
+            check(included, stack);
+          else if (const auto entry = starting(line, "set"); !entry.empty())
+            {
+              std::string path;
+              for (const auto &s : section)
+                path += s + "/";
+              path += trim(entry.substr(0, entry.find('=')));
+              const auto [at, fresh] = set_at.emplace(path, number);
+              if (!fresh)
+                throw InvalidParameter(path, "set twice in " + file,
+                                       "lines " + std::to_string(at->second) + " and " + std::to_string(number) +
+                                         ": each entry once per file (a file may set again an entry of a file it "
+                                         "includes)");
+            }
+        }
+      stack.pop_back();
+    }
+  } // namespace
+
+  void check_parameter_file(const std::string &file)
+  {
+    std::vector<std::string> stack;
+    check(file, stack);
+  }
+} // namespace pumpd::coupling
