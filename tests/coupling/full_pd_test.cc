@@ -40,6 +40,7 @@ namespace
     p.scene.initial_cracks         = "0.1016,0; 0.1016,0.0508";
     p.scene.reference_path         = "";
     p.full_pd.no_fail_horizons     = 5.;
+    p.full_pd.max_advance          = 0.;
     p.full_pd.max_steps            = 150;
     p.full_pd.stall_steps          = 4;
     p.full_pd.output_interval      = 1000;
