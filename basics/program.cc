@@ -3,6 +3,7 @@
 #include <elf.h>
 #include <fcntl.h>
 #include <spawn.h>
+#include <csignal>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -13,6 +14,7 @@
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
+#include <thread>
 
 #include "hash.h"
 #include "text.h"
@@ -21,7 +23,7 @@ extern char **environ;
 
 namespace pumpd
 {
-  ProgramRun run_program(const std::vector<std::string> &argv, const std::string &log)
+  ProgramRun run_program(const std::vector<std::string> &argv, const std::string &log, double time_limit)
   {
     std::vector<char *> args;
     for (const auto &a : argv)
@@ -47,9 +49,23 @@ namespace pumpd
 
     int    status = 0;
     rusage usage{};
-    while (::wait4(pid, &status, 0, &usage) < 0)
-      if (errno != EINTR)
-        throw std::runtime_error("waiting for " + argv[0] + " failed: " + std::strerror(errno));
+    const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+    for (;;)
+      {
+        const pid_t done = ::wait4(pid, &status, time_limit > 0. ? WNOHANG : 0, &usage);
+        if (done == pid)
+          break;
+        if (done < 0 && errno != EINTR)
+          throw std::runtime_error("waiting for " + argv[0] + " failed: " + std::strerror(errno));
+        if (done == 0 && elapsed() > time_limit)
+          {
+            ::kill(pid, SIGKILL);
+            run.timed_out = true;
+            time_limit    = 0.; // the next wait blocks until the kill is reaped
+          }
+        else if (done == 0)
+          std::this_thread::sleep_for(std::chrono::milliseconds(20));
+      }
     if (WIFEXITED(status))
       run.exit_code = WEXITSTATUS(status);
     if (WIFSIGNALED(status))

@@ -15,12 +15,14 @@ namespace pumpd
     int    signal      = 0;  ///< the signal that killed it (0: none)
     double seconds     = 0.;
     double peak_memory = 0.; ///< [MiB]
+    bool   timed_out   = false; ///< killed at the time limit
   };
 
   /// Runs argv[0] (searched on the PATH unless it holds a '/') with the arguments argv[1...], stdin
   /// from /dev/null, stdout and stderr to `log` (created anew), and waits for it. Throws
-  /// std::runtime_error if `log` cannot be written or waiting fails.
-  ProgramRun run_program(const std::vector<std::string> &argv, const std::string &log);
+  /// std::runtime_error if `log` cannot be written or waiting fails. A program still running after
+  /// `time_limit` seconds (> 0) is killed (SIGKILL) and reported as timed out.
+  ProgramRun run_program(const std::vector<std::string> &argv, const std::string &log, double time_limit = 0.);
 
   /// The last line of a file that is not blank ("" if none).
   std::string last_line(const std::string &file);

@@ -55,7 +55,8 @@ namespace pumpd::coupling
       const auto text = file_contents(file);
       if (!text)
         throw InvalidParameter(stack.empty() ? "scene file" : "include", file,
-                               "not found, or not a readable regular file (the path of a .prm file, relative to the working directory)");
+                               "not found, or not a readable regular file (the path of a .prm file, relative to "
+                               "the working directory)");
       const auto canonical = std::filesystem::weakly_canonical(file).string();
       for (const auto &open : stack)
         if (open == canonical)

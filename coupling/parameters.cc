@@ -2,6 +2,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 
+#include <algorithm>
 #include <ostream>
 #include <sstream>
 
@@ -65,6 +66,10 @@ namespace pumpd::coupling
         return;
       }
     const Scene scene = build_scene(p.scene);
+    const auto &body  = scene.body.bounding_box();
+    if (const double most = 0.1 * std::min(body.width(), body.height()); p.growth.hole_margin > most)
+      throw InvalidParameter("Hole margin", to_text(p.growth.hole_margin),
+                             "must be at most a tenth of the body's smaller side (" + to_text(most) + " m)");
     if (p.method != "full-pd")
       {
         check_tip_radius(scene, p.global);

@@ -95,7 +95,13 @@ namespace pumpd::global
       std::vector<std::string> args = gmsh_arguments(mode, characteristic_length);
       const std::string        gmsh = args.front();
       args.insert(args.end(), {"-o", out.string(), file});
-      const ProgramRun run = run_program(args, log.string());
+      // A .geo that never finishes (a loop without end) must not hang the run.
+      const double     time_limit = 600.;
+      const ProgramRun run        = run_program(args, log.string(), time_limit);
+      if (run.timed_out)
+        throw InvalidParameter("Mesh file", file,
+                               "gmsh did not finish within " + to_text(time_limit) +
+                                 " s: check the .geo (a loop without end?), or use a larger Mesh size");
       if (run.start_error != 0)
         throw InvalidParameter("Mesh file", file,
                                "meshing a .geo needs the gmsh executable, but '" + gmsh +

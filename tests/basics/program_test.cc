@@ -36,6 +36,20 @@ TEST(RunProgram, KilledBySignal)
   EXPECT_EQ(run.signal, 9);
 }
 
+TEST(RunProgram, KilledAtItsTimeLimit)
+{
+  const auto run = pumpd::run_program({"/bin/sh", "-c", "sleep 30"}, log_file, 0.2);
+  EXPECT_TRUE(run.timed_out);
+  EXPECT_EQ(run.signal, 9);
+}
+
+TEST(RunProgram, WithinItsTimeLimit)
+{
+  const auto run = pumpd::run_program({"/bin/sh", "-c", "exit 4"}, log_file, 30.);
+  EXPECT_FALSE(run.timed_out);
+  EXPECT_EQ(run.exit_code, 4);
+}
+
 TEST(RunProgram, NotStarted)
 {
   const auto run = pumpd::run_program({"/no/such/program"}, log_file);
