@@ -3,12 +3,12 @@
 #include <elf.h>
 #include <fcntl.h>
 #include <spawn.h>
-#include <csignal>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <cerrno>
+#include <csignal>
 #include <chrono>
 #include <cstring>
 #include <filesystem>
@@ -39,9 +39,19 @@ namespace pumpd
     posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
     posix_spawn_file_actions_adddup2(&actions, out, STDOUT_FILENO);
     posix_spawn_file_actions_adddup2(&actions, out, STDERR_FILENO);
+    // Under a time limit the program gets a process group of its own, so that the kill reaches
+    // what it started (a wrapper script's gmsh).
+    posix_spawnattr_t attributes;
+    posix_spawnattr_init(&attributes);
+    if (time_limit > 0.)
+      {
+        posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
+        posix_spawnattr_setpgroup(&attributes, 0);
+      }
     pid_t      pid = 0;
     ProgramRun run;
-    run.start_error = posix_spawnp(&pid, args[0], &actions, nullptr, args.data(), environ);
+    run.start_error = posix_spawnp(&pid, args[0], &actions, &attributes, args.data(), environ);
+    posix_spawnattr_destroy(&attributes);
     posix_spawn_file_actions_destroy(&actions);
     ::close(out);
     if (run.start_error != 0)
@@ -50,6 +60,7 @@ namespace pumpd
     int    status = 0;
     rusage usage{};
     const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
+    bool killed = false;
     for (;;)
       {
         const pid_t done = ::wait4(pid, &status, time_limit > 0. ? WNOHANG : 0, &usage);
@@ -59,9 +70,9 @@ namespace pumpd
           throw std::runtime_error("waiting for " + argv[0] + " failed: " + std::strerror(errno));
         if (done == 0 && elapsed() > time_limit)
           {
-            ::kill(pid, SIGKILL);
-            run.timed_out = true;
-            time_limit    = 0.; // the next wait blocks until the kill is reaped
+            ::kill(-pid, SIGKILL);
+            killed     = true;
+            time_limit = 0.; // the next wait blocks until the kill is reaped
           }
         else if (done == 0)
           std::this_thread::sleep_for(std::chrono::milliseconds(20));
@@ -70,6 +81,7 @@ namespace pumpd
       run.exit_code = WEXITSTATUS(status);
     if (WIFSIGNALED(status))
       run.signal = WTERMSIG(status);
+    run.timed_out = killed && run.signal == SIGKILL;
     run.seconds     = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     run.peak_memory = double(usage.ru_maxrss) / 1024.; // kB on Linux
     return run;

@@ -7,10 +7,11 @@
 #include <cmath>
 #include <iostream>
 #include <limits>
+#include <stdexcept>
 
+#include "crack_network.h"
 #include "elasticity.h"
 #include "error.h"
-#include "crack_network.h"
 #include "global_conditions.h"
 
 namespace pumpd::coupling
@@ -185,8 +186,13 @@ namespace pumpd::coupling
         const double g = (sifs[t].k1 * sifs[t].k1 + sifs[t].k2 * sifs[t].k2) / scene.material.effective_modulus();
         s.critical_load_factor = s.k1 > 0. ? lambda * std::sqrt(scene.material.fracture_energy / g)
                                            : std::numeric_limits<double>::infinity();
-        if (!std::isfinite(s.k1) || !std::isfinite(s.k2) || (s.k1 > 0. && !(s.critical_load_factor > 0.)) ||
-            std::isnan(s.critical_load_factor))
+        const bool finite = std::isfinite(s.k1) && std::isfinite(s.k2) && !std::isnan(s.critical_load_factor) &&
+                            !(s.k1 > 0. && !(s.critical_load_factor > 0.));
+        if (!finite && cracked_solve_done)
+          throw std::runtime_error("the global solve gave K_I = " + to_text(s.k1) + ", K_II = " + to_text(s.k2) +
+                                   " Pa m^1/2 at the tip " + to_text(s.position) +
+                                   " after earlier solves gave finite ones: the crack's geometry there degenerates");
+        if (!finite)
           throw InvalidParameter("Boundary conditions", "the scene's loads",
                                  "give K_I = " + to_text(s.k1) + ", K_II = " + to_text(s.k2) + " Pa m^1/2 and lambda_c = " +
                                    to_text(s.critical_load_factor) + " at the tip " + to_text(s.position) +
@@ -195,6 +201,7 @@ namespace pumpd::coupling
                                    "(SI units)");
         states.push_back(s);
       }
+    cracked_solve_done = true;
     return states;
   }
 

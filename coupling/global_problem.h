@@ -119,6 +119,7 @@ namespace pumpd::coupling
     std::vector<Refinement>                       history;
     std::vector<Refinement>                       applied; ///< the refinements the mesh holds, in order
     double                                        lambda = 1.;
+    bool                                          cracked_solve_done = false; ///< a solve with cracks has run
   };
 
   /// theta_c of the maximum hoop stress criterion (Erdogan & Sih 1963) [rad], in (-pi, pi); 0

@@ -66,7 +66,7 @@ int main(int argc, char **argv)
   };
   if (argc == 1)
     return misuse("no scene file");
-  if (arg.rfind("-", 0) == 0 && arg != "--study" && arg != "--print-parameters")
+  if (arg.rfind("-", 0) == 0 && arg != "--study" && arg != "--print-parameters" && arg != "--help" && arg != "-h")
     return misuse("unknown option " + arg);
   if ((argc > 2 && !study) || (arg == "--study" && !study))
     return misuse("wrong number of arguments");

@@ -1,5 +1,6 @@
 #include "parameter_file.h"
 
+#include <algorithm>
 #include <cctype>
 #include <filesystem>
 #include <map>
@@ -13,26 +14,29 @@ namespace pumpd::coupling
 {
   namespace
   {
-    /// The lines of a scene file as deal.II reads them: comments dropped, lines ending in a
-    /// backslash joined to the next; each with the number of its first line.
+    /// The lines of a scene file as deal.II 9.4 reads them: each line trimmed, one that ends in a
+    /// backslash joined to the next (the backslash dropped), then the comment from '#' cut and
+    /// tabs made spaces; each with the number of its first line.
     std::vector<std::pair<std::string, int>> logical_lines(const std::string &text)
     {
       std::vector<std::pair<std::string, int>> lines;
       std::istringstream                       in(text);
       std::string                              line, joined;
       int                                      number = 0, first = 0;
+      bool                                     continued = false;
       while (std::getline(in, line))
         {
           ++number;
-          line = trim(line.substr(0, line.find('#')));
-          if (joined.empty())
+          if (!continued)
             first = number;
-          if (!line.empty() && line.back() == '\\')
-            {
-              joined += line.substr(0, line.size() - 1) + " ";
-              continue;
-            }
-          lines.emplace_back(trim(joined + line), first);
+          line = trim(line);
+          continued = !line.empty() && line.back() == '\\';
+          joined += continued ? line.substr(0, line.size() - 1) : line;
+          if (continued)
+            continue;
+          joined = joined.substr(0, joined.find('#'));
+          std::replace(joined.begin(), joined.end(), '\t', ' ');
+          lines.emplace_back(trim(joined), first);
           joined.clear();
         }
       return lines;

@@ -55,6 +55,20 @@ namespace pumpd::coupling
     return p;
   }
 
+  void check_against_scene(const Parameters &p, const Scene &scene)
+  {
+    const auto &body = scene.body.bounding_box();
+    if (const double most = 0.1 * std::min(body.width(), body.height());
+        !scene.body.holes().empty() && p.growth.hole_margin > most)
+      throw InvalidParameter("Hole margin", to_text(p.growth.hole_margin),
+                             "must be at most a tenth of the body's smaller side (" + to_text(most) + " m)");
+    if (p.method != "full-pd")
+      {
+        check_tip_radius(scene, p.global);
+        check_refinement(scene, p.global, p.scene.max_cells);
+      }
+  }
+
   void run(const Parameters &p, std::ostream &out)
   {
     make_output_directory("Scene / Output directory", p.scene.output_directory);
@@ -66,15 +80,7 @@ namespace pumpd::coupling
         return;
       }
     const Scene scene = build_scene(p.scene);
-    const auto &body  = scene.body.bounding_box();
-    if (const double most = 0.1 * std::min(body.width(), body.height()); p.growth.hole_margin > most)
-      throw InvalidParameter("Hole margin", to_text(p.growth.hole_margin),
-                             "must be at most a tenth of the body's smaller side (" + to_text(most) + " m)");
-    if (p.method != "full-pd")
-      {
-        check_tip_radius(scene, p.global);
-        check_refinement(scene, p.global, p.scene.max_cells);
-      }
+    check_against_scene(p, scene);
     if (scene.cracks.empty() && p.method == "global-local")
       run_global_local_from_initiation(scene, p.global_local_settings(), p.initiation, out);
     else if (scene.cracks.empty() && p.method == "lefm-growth")

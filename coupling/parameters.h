@@ -56,6 +56,12 @@ namespace pumpd::coupling
   /// The same from the text of a scene file (tests).
   Parameters parse_parameters(const std::string &text);
 
+  /// The checks of the settings against the built scene that no single section can make (the
+  /// hole margin against the body, the tip enrichment radius against the boundary, the refined
+  /// mesh against Maximum cells): InvalidParameter naming the entry. run() and a study's planning
+  /// call it.
+  void check_against_scene(const Parameters &parameters, const Scene &scene);
+
   /// Runs the method on the scene: builds the scene from the mesh, then calls run_lefm_growth,
   /// run_global_local, run_full_pd or run_edge_crack. Progress and a closing line to `out`. A
   /// scene without a crack: global-local nucleates one at the first initiation site and grows it

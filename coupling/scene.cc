@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -80,15 +81,14 @@ namespace pumpd::coupling
 
     prm.enter_subsection("Material");
     prm.add_parameter("Young's modulus", material.youngs_modulus,
-                      "E [Pa] (SI units: from soft polymers, 1e3, to diamond, 1e12).", Patterns::Double(1e3, 1e13));
+                      "E [Pa] (SI units: from soft polymers to diamond).", Patterns::Double(1e3, 1e13));
     prm.add_parameter("Poisson's ratio", material.poisson_ratio,
                       "nu. The methods with peridynamics need bond-based PD's value: 1/4 in plane strain, 1/3 in "
                       "plane stress.",
                       Patterns::Double(0., 0.4999));
     prm.add_parameter("Fracture energy", material.fracture_energy,
-                      "Critical energy release rate G_c [J/m^2] (SI units: from gels and glass, 1e-2, to tough "
-                      "metals, 1e6).",
-                      Patterns::Double(1e-3, 1e7));
+                      "Critical energy release rate G_c [J/m^2] (SI units: from gels to tough metals).",
+                      Patterns::Double(1e-4, 1e7));
     prm.add_parameter("Density", material.density, "rho [kg/m^3] (SI units: from foams to the heaviest metals).",
                       Patterns::Double(1., 1e5));
     prm.add_parameter("Plane strain", material.plane_strain, "true: plane strain; false: plane stress.", Patterns::Bool());
@@ -648,8 +648,9 @@ namespace pumpd::coupling
     if (!error)
       {
         const std::string probe = directory + "/.pumpd-write-test";
+        errno = 0;
         if (!std::ofstream(probe))
-          error = std::make_error_code(std::errc::permission_denied);
+          error = std::error_code(errno != 0 ? errno : EACCES, std::generic_category());
         std::error_code ignored;
         std::filesystem::remove(probe, ignored);
       }

@@ -51,6 +51,23 @@ namespace pumpd::coupling
       return t.str();
     }
 
+    /// The study's output directory, created before any work: its own, else the scene's with
+    /// /study appended.
+    std::string study_directory(const Parameters &p)
+    {
+      if (!p.study.output_directory.empty())
+        {
+          make_output_directory("Study / Output directory", p.study.output_directory);
+          return p.study.output_directory;
+        }
+      if (p.scene.output_directory.empty())
+        throw InvalidParameter("Study / Output directory", "(empty)",
+                               "a study writes its table and runs into a folder: give this or the scene's Output "
+                               "directory (then <it>/study)");
+      make_output_directory("Scene / Output directory", p.scene.output_directory + "/study");
+      return p.scene.output_directory + "/study";
+    }
+
     /// What the study knows of the finished runs (runs.csv in its output directory): by key.
     class Runs
     {
@@ -58,7 +75,7 @@ namespace pumpd::coupling
       explicit Runs(const std::string &directory)
         : file(directory + "/runs.csv")
       {
-        make_output_directory("Study / Output directory", directory);
+        fs::create_directories(directory);
         for (const auto &r : read_records(file))
           if (r.status != "killed")
             by_key[r.key] = r;
@@ -218,8 +235,7 @@ namespace pumpd::coupling
       /// Reads the scene file and plans the runs: every check before any run.
       Study(const std::string &scene_file, const std::string &executable, std::ostream &out)
         : parameters(read_parameters(scene_file))
-        , directory(parameters.study.output_directory.empty() ? parameters.scene.output_directory + "/study"
-                                                              : parameters.study.output_directory)
+        , directory(study_directory(parameters))
         , scene(build_scene_through_cache(parameters.scene, directory))
         , executable(executable)
         , version(program_version(executable))
