@@ -236,23 +236,13 @@ namespace pumpd::coupling
       Clock::time_point               t0 = Clock::now();
     };
 
-    double crack_tolerance(const Scene &scene)
-    {
-      const auto &box = scene.body.bounding_box();
-      return 1e-8 * std::max(box.width(), box.height());
-    }
-
     /// The scene's cracks (an edge crack has one tip, an interior crack two; an end on another
     /// crack's face is a junction: a scene's T, or a crack that joined another before a resume).
     std::vector<global::Crack> the_cracks(const std::vector<geometry::Polyline> &polylines, const Scene &scene)
     {
       if (polylines.empty())
         throw InvalidParameter("Initial cracks", "none", "the global-local cycle grows a crack: give one");
-      std::vector<global::Crack> cracks;
-      for (const auto &p : polylines)
-        cracks.emplace_back(p, scene.body, crack_tolerance(scene));
-      global::join_touching(cracks, crack_tolerance(scene));
-      return cracks;
+      return enriched_cracks(polylines, scene);
     }
 
     Cycle::Cycle(const Scene &sc, const GlobalLocalSettings &settings, std::ostream &progress)

@@ -48,15 +48,24 @@ namespace pumpd::coupling
     prm.leave_subsection();
   }
 
+  double crack_tolerance(const Scene &scene)
+  {
+    const auto &box = scene.body.bounding_box();
+    return 1e-8 * std::max(box.width(), box.height());
+  }
+
+  std::vector<global::Crack> enriched_cracks(const std::vector<geometry::Polyline> &polylines, const Scene &scene)
+  {
+    std::vector<global::Crack> cracks;
+    for (const auto &line : polylines)
+      cracks.emplace_back(line, scene.body, crack_tolerance(scene));
+    global::join_touching(cracks, crack_tolerance(scene));
+    return cracks;
+  }
+
   void check_tip_radius(const Scene &scene, const GlobalSettings &settings)
   {
-    const auto  &box       = scene.body.bounding_box();
-    const double tolerance = 1e-8 * std::max(box.width(), box.height());
-    std::vector<global::Crack> cracks;
-    for (const auto &line : scene.cracks)
-      cracks.emplace_back(line, scene.body, tolerance);
-    global::join_touching(cracks, tolerance);
-    for (const auto &crack : cracks)
+    for (const auto &crack : enriched_cracks(scene.cracks, scene))
       for (const auto &tip : crack.tips())
         if (const double clearance = scene.body.clearance(tip.position); clearance <= settings.tip_radius)
           throw InvalidParameter("Tip enrichment radius", to_text(settings.tip_radius),
@@ -187,7 +196,7 @@ namespace pumpd::coupling
         s.critical_load_factor = s.k1 > 0. ? lambda * std::sqrt(scene.material.fracture_energy / g)
                                            : std::numeric_limits<double>::infinity();
         const bool finite = std::isfinite(s.k1) && std::isfinite(s.k2) && !std::isnan(s.critical_load_factor) &&
-                            !(s.k1 > 0. && !(s.critical_load_factor > 0.));
+                            (s.k1 <= 0. || s.critical_load_factor > 0.);
         if (!finite && cracked_solve_done)
           throw std::runtime_error("the global solve gave K_I = " + to_text(s.k1) + ", K_II = " + to_text(s.k2) +
                                    " Pa m^1/2 at the tip " + to_text(s.position) +

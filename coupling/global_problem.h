@@ -41,6 +41,13 @@ namespace pumpd::coupling
     void add_parameters(dealii::ParameterHandler &prm);
   };
 
+  /// Two crack points closer than this count as one: 1e-8 of the body's larger side [m].
+  double crack_tolerance(const Scene &scene);
+
+  /// The cracks along `polylines` in the scene's body, cracks that touch joined (an end on
+  /// another crack's face is a junction): what the global problem enriches.
+  std::vector<global::Crack> enriched_cracks(const std::vector<geometry::Polyline> &polylines, const Scene &scene);
+
   /// Refuses a scene whose initial cracks have a tip closer to the body's boundary (outline or
   /// hole) than the tip enrichment radius: the interaction integral's domain (Moes et al. 1999)
   /// would cross a free edge whose normal has a component along the crack, and K would be wrong.

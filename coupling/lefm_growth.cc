@@ -150,13 +150,10 @@ namespace pumpd::coupling
   {
     const auto                 t0  = std::chrono::steady_clock::now();
     const auto                &box       = scene.body.bounding_box();
-    const double               tolerance = 1e-8 * std::max(box.width(), box.height());
-    std::vector<global::Crack> cracks;
+    const double               tolerance = crack_tolerance(scene);
     if (scene.cracks.empty())
       scene.crack(); // names "Initial cracks"
-    for (const auto &line : scene.cracks)
-      cracks.emplace_back(line, scene.body, tolerance);
-    global::join_touching(cracks, tolerance);
+    std::vector<global::Crack> cracks = enriched_cracks(scene.cracks, scene);
     check_clearance(cracks, s.global.tip_radius);
     if (const double least = 1e-4 * std::max(box.width(), box.height()); s.lefm.growth_increment < least)
       throw InvalidParameter("Growth increment", to_text(s.lefm.growth_increment),
