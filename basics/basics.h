@@ -11,6 +11,7 @@
 //   vtu.h       the VTU writer (unstructured grids, arrays as base64 binary)
 //   text.h      a file's bytes, trim
 //   hash.h      content hashes (FNV-1a) and their hex text
+//   memory.h    the memory this machine can give a new allocation
 //   program.h   another program run as a child process: exit status, wall time, peak memory
 #pragma once
 
@@ -21,6 +22,7 @@
 #include "geometry.h"
 #include "hash.h"
 #include "lefm.h"
+#include "memory.h"
 #include "program.h"
 #include "pvd.h"
 #include "text.h"

@@ -607,6 +607,13 @@ namespace pumpd::geometry
         throw InvalidParameter("Mesh boundary", text(p),
                                "this boundary curve lies outside the largest one: the mesh has more than one piece, "
                                "and a scene is one connected body");
+    for (const auto &hole : loops)
+      for (const auto &loop : loops)
+        if (const Point p = loop.pieces.front().a; &loop != &hole && hole.encloses(p))
+          throw InvalidParameter("Mesh boundary", text(p),
+                                 "this boundary curve lies inside the hole bounded by the curve through " +
+                                   text(hole.pieces.front().a) +
+                                   ": the mesh has a piece inside a hole, and a scene is one connected body");
     return Body(std::move(outline), std::move(loops));
   }
 } // namespace pumpd::geometry

@@ -114,6 +114,7 @@ namespace pumpd::geometry
   /// closed curves: the one with the largest area is the outline, the others are holes. Runs of
   /// at least three edges whose vertices lie on one circle and turn by less than 50 degrees at
   /// each become arcs, collinear runs become one segment. Throws InvalidParameter ("Mesh
-  /// boundary") if an edge end does not close up.
+  /// boundary") if an edge end does not close up or the edges bound more than one piece (a curve
+  /// outside the outline, or one inside a hole).
   Body body_from_edges(const std::vector<Point> &vertices, const std::vector<std::array<std::size_t, 2>> &edges);
 } // namespace pumpd::geometry

@@ -68,6 +68,8 @@ namespace pumpd::coupling
     write_doubles(file, "boxes", boxes);
     write_doubles(file, "refinements", refined);
     write_doubles(file, "cycle", cycle);
+    // The fingerprint as two 32-bit halves, each exact in a double.
+    write_doubles(file, "scene", {double(state.scene >> 32), double(state.scene & 0xffffffffull)});
     H5Fclose(file);
     std::filesystem::rename(partial, path);
   }
@@ -79,13 +81,14 @@ namespace pumpd::coupling
     const hid_t file = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
     fail_if(file < 0, "cannot open " + path);
     CycleState          s;
-    std::vector<double> crack, boxes, refined, cycle;
+    std::vector<double> crack, boxes, refined, cycle, scene;
     try
       {
-        crack = read_doubles(file, "crack");
+        crack   = read_doubles(file, "crack");
         boxes   = read_doubles(file, "boxes");
         refined = read_doubles(file, "refinements");
-        cycle = read_doubles(file, "cycle");
+        cycle   = read_doubles(file, "cycle");
+        scene   = read_doubles(file, "scene");
       }
     catch (...)
       {
@@ -94,7 +97,7 @@ namespace pumpd::coupling
       }
     H5Fclose(file);
     fail_if(crack.size() < 6 || crack.size() % 3 != 0 || boxes.size() % 5 != 0 || refined.size() % 3 != 0 ||
-              cycle.size() < 2 || (cycle.size() - 2) % 6 != 0,
+              cycle.size() < 2 || (cycle.size() - 2) % 6 != 0 || scene.size() != 2,
             path + " is not a global-local cycle checkpoint");
     s.ends.resize((cycle.size() - 2) / 3);
     for (std::size_t i = 0; i < crack.size(); i += 3)
@@ -113,6 +116,7 @@ namespace pumpd::coupling
       }
     for (std::size_t i = 0; i < refined.size(); i += 3)
       s.refinements.push_back({{refined[i], refined[i + 1]}, (unsigned int)(refined[i + 2])});
+    s.scene     = (std::uint64_t(scene[0]) << 32) | std::uint64_t(scene[1]);
     s.exchanges = std::size_t(cycle[0]);
     s.finished  = cycle[1] != 0.;
     for (std::size_t e = 0; e < s.ends.size(); ++e)

@@ -2,10 +2,12 @@
 // interrupted run resumes where it stopped. The PD boxes are rebuilt at every exchange from the
 // crack polylines, so the cracks, the counters, the refinements of the global mesh (tip positions
 // and levels: the same mesh on resume) and, per end of each crack, its tip's boxes, accepted load,
-// last box's horizon and whether it stopped are the whole state.
+// last box's horizon and whether it stopped are the whole state, with the fingerprint of the scene
+// that wrote it.
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -25,6 +27,7 @@ namespace pumpd::coupling
 
   struct CycleState
   {
+    std::uint64_t              scene     = 0; ///< geometry_fingerprint of the scene (coupling/scene.h)
     std::size_t                exchanges = 0; ///< exchanges done so far
     bool                       finished  = false;
     std::vector<geometry::Polyline> cracks;

@@ -287,6 +287,10 @@ namespace pumpd::coupling
                                      std::string(e.what()) + " (needs the checkpoint.h5 a global-local run of this "
                                                              "scene wrote in its output directory)");
             }
+          if (state.scene != geometry_fingerprint(scene))
+            throw InvalidParameter("Resume", "true",
+                                   checkpoint + " was written by a run of another scene (its mesh or initial cracks "
+                                                "differ): resume the scene that wrote it, or set Resume = false");
           if (state.cracks.size() != cracks.size())
             throw InvalidParameter("Resume", "true",
                                    "the checkpoint holds " + std::to_string(state.cracks.size()) +
@@ -747,6 +751,7 @@ namespace pumpd::coupling
       if (recorder.writes())
         {
           CsvFile boxes_table(recorder.path("boxes.csv"), "box,x_min_m,y_min_m,x_max_m,y_max_m,moved,tip_end,crack");
+          state.scene     = geometry_fingerprint(scene);
           state.exchanges = n + 1;
           state.finished  = !stop.empty();
           state.cracks    = polylines();

@@ -11,6 +11,7 @@
 
 #include "crack_network.h"
 #include "elasticity.h"
+#include "mesh.h"
 #include "error.h"
 #include "global_conditions.h"
 
@@ -80,17 +81,23 @@ namespace pumpd::coupling
     double area = scene.body.outline().area();
     for (const auto &hole : scene.body.holes())
       area -= hole.area();
-    const double pi        = std::acos(-1.);
-    const double cells     = double(scene.mesh->n_active_cells());
-    const double r         = settings.refinement_radius;
-    const double refined   = std::min(area, pi * r * r + 2. * r * settings.refinement_trail);
+    const double pi    = std::acos(-1.);
+    const double cells = double(scene.mesh->n_active_cells());
+    const double r     = settings.refinement_radius;
+    std::size_t  tips  = 0;
+    for (const auto &crack : enriched_cracks(scene.cracks, scene))
+      tips += crack.tips().size();
+    const double refined =
+      std::min(area, double(std::max<std::size_t>(tips, 1)) * (pi * r * r + 2. * r * settings.refinement_trail));
     const double estimated = cells + cells * refined / area * (std::pow(4., settings.refinement_levels) - 1.);
+    const std::string name = "Refinement levels near the tip", value = std::to_string(settings.refinement_levels);
+    const std::string what = "with Refinement radius = " + to_text(r) + " m and Refinement trail = " +
+                             to_text(settings.refinement_trail) + " m the mesh would have about " +
+                             to_text(estimated, 3) + " cells";
+    const std::string remedy = ": fewer levels or a smaller radius";
     if (estimated > max_cells)
-      throw InvalidParameter("Refinement levels near the tip", std::to_string(settings.refinement_levels),
-                             "with Refinement radius = " + to_text(r) + " m and Refinement trail = " +
-                               to_text(settings.refinement_trail) + " m the mesh would have about " +
-                               to_text(estimated, 3) + " cells, more than Maximum cells = " + to_text(max_cells, 3) +
-                               ": fewer levels or a smaller radius");
+      throw InvalidParameter(name, value, what + ", more than Maximum cells = " + to_text(max_cells, 3) + remedy);
+    global::check_memory(estimated, name, value, what, remedy);
   }
 
   GlobalProblem::GlobalProblem(const Scene &s, const GlobalSettings &g)

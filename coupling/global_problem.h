@@ -54,8 +54,9 @@ namespace pumpd::coupling
   void check_tip_radius(const Scene &scene, const GlobalSettings &settings);
 
   /// Refuses refinement settings whose refined mesh would exceed `max_cells` (Scene / Maximum
-  /// cells): the cells of the mean size within the refinement radius of a tip and its trail, each
-  /// split into 4^levels.
+  /// cells) or this machine's memory (global::check_memory): the cells of the mean size within the
+  /// refinement radius of each initial tip (one if there is none) and its trail, each split into
+  /// 4^levels.
   void check_refinement(const Scene &scene, const GlobalSettings &settings, double max_cells);
 
   /// A crack tip under the scene's loading.

@@ -31,7 +31,7 @@ namespace pumpd::coupling
     prm.add_parameter("First K over K_c", k_start, "K of the first load step, as a multiple of K_c = sqrt(E' G_c).",
                       Patterns::Double(1e-6, 1000.));
     prm.add_parameter("Last K over K_c", k_end, "K of the last load step, at least the first.", Patterns::Double(1e-6, 1000.));
-    prm.add_parameter("Load steps", load_steps, "Number of K levels, equally spaced.", Patterns::Integer(1));
+    prm.add_parameter("Load steps", load_steps, "Number of K levels, equally spaced.", Patterns::Integer(1, 10000));
     prm.add_parameter("Stop after growth", growth_to_stop,
                       "Stop the load steps once the crack grew this far [m]; 0 runs all steps.", Patterns::Double(0.));
     prm.add_parameter("Output interval", output_interval, "Write the PD state every n load steps.", Patterns::Integer(1));

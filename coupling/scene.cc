@@ -23,6 +23,7 @@
 
 #include "crack.h"
 #include "error.h"
+#include "hash.h"
 #include "mesh.h"
 #include "path_metrics.h"
 #include "text.h"
@@ -695,7 +696,14 @@ namespace pumpd::coupling
 
     auto tria  = std::make_shared<dealii::Triangulation<2>>();
     auto names = global::read_mesh(s.mesh_file, *tria, s.mesh_size, s.max_cells);
-    scene.body = global::body_of(*tria);
+    try
+      {
+        scene.body = global::body_of(*tria);
+      }
+    catch (const InvalidParameter &e)
+      {
+        throw InvalidParameter("Mesh file", s.mesh_file, e.what());
+      }
     scene.mesh = tria;
     const Places places(tria, std::move(names));
     read_conditions(s, places, scene.conditions);
@@ -729,6 +737,32 @@ namespace pumpd::coupling
       }
     check_reference_path(s.reference_path, scene);
     return scene;
+  }
+
+  std::uint64_t geometry_fingerprint(const Scene &scene)
+  {
+    std::string bytes;
+    const auto  add = [&bytes](const auto value) {
+      bytes.append(reinterpret_cast<const char *>(&value), sizeof(value));
+    };
+    for (const auto &v : scene.mesh->get_vertices())
+      {
+        add(v[0]);
+        add(v[1]);
+      }
+    for (const auto &cell : scene.mesh->active_cell_iterators())
+      for (const unsigned int v : cell->vertex_indices())
+        add(std::uint64_t(cell->vertex_index(v)));
+    for (const auto &crack : scene.cracks)
+      {
+        add(std::uint64_t(crack.size()));
+        for (const auto &p : crack)
+          {
+            add(p.x);
+            add(p.y);
+          }
+      }
+    return fnv1a(bytes);
   }
 
   geometry::Polyline read_path(const std::string &file)

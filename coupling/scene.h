@@ -14,6 +14,7 @@
 // cracks inside the body with their mouths on its boundary.
 #pragma once
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -103,6 +104,11 @@ namespace pumpd::coupling
   /// Reads the mesh and builds the scene. Throws InvalidParameter naming the entry and what is
   /// allowed for every check in the header comment.
   Scene build_scene(const SceneSettings &settings);
+
+  /// A hash (FNV-1a) of what makes the scene's geometry: the mesh's vertices and cells and the
+  /// initial cracks. A cycle checkpoint keeps it, so that a run resumes only the scene that wrote
+  /// it.
+  std::uint64_t geometry_fingerprint(const Scene &scene);
 
   /// Reference path (x, y per line; lines starting with '#' or a letter are skipped). Throws
   /// InvalidParameter("Reference path", ...) if it cannot be read.

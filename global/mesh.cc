@@ -24,6 +24,7 @@
 
 #include "error.h"
 #include "hash.h"
+#include "memory.h"
 #include "program.h"
 #include "text.h"
 
@@ -410,10 +411,15 @@ namespace pumpd::global
     const std::string extension = extension_of(path);
 
     const auto too_many = [&](double cells, const std::string &how) {
-      if (max_cells > 0. && cells > max_cells)
+      if (max_cells <= 0.)
+        return;
+      const std::string remedy = ": use a larger Mesh size (cells scale with 1 / size^2)";
+      if (cells > max_cells)
         throw InvalidParameter("Mesh size", to_text(characteristic_length),
                                how + " " + to_text(cells, 3) + " cells, more than Maximum cells = " +
-                                 to_text(max_cells, 3) + ": use a larger Mesh size (cells scale with 1 / size^2)");
+                                 to_text(max_cells, 3) + remedy);
+      check_memory(cells, "Mesh size", to_text(characteristic_length), how + " " + to_text(cells, 3) + " cells",
+                   remedy);
     };
     MeshNames names;
     if (extension == ".msh")
@@ -441,6 +447,24 @@ namespace pumpd::global
       throw InvalidParameter("Mesh file", file, "must be a gmsh .msh or .geo file");
     too_many(tria.n_active_cells(), "the mesh has");
     return names;
+  }
+
+  double estimated_global_bytes(double cells)
+  {
+    const double n = 2. * std::max(cells, 1.);
+    return 250. * n * std::log2(std::max(n, 2.));
+  }
+
+  void check_memory(double cells, const std::string &name, const std::string &value, const std::string &what,
+                    const std::string &remedy)
+  {
+    const double needed = estimated_global_bytes(cells), available = 0.8 * available_memory();
+    const double gib    = 1024. * 1024. * 1024.;
+    if (needed > available)
+      throw InvalidParameter(name, value,
+                             what + ": the global problem needs about " + to_text(needed / gib, 3) +
+                               " GiB, more than the " + to_text(available / gib, 3) +
+                               " GiB this machine can give it" + remedy);
   }
 
   geometry::Body body_of(const dealii::Triangulation<2> &tria)

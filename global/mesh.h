@@ -45,7 +45,8 @@ namespace pumpd::global
   ///   same gmsh program; a .geo whose sources are unknown is meshed every time.
   /// With max_cells > 0, a .geo whose estimated cell count (bounding box area / h^2, from gmsh's
   /// unrolled geometry, before meshing; not on a cache hit) or a mesh whose cell count exceeds
-  /// it is refused.
+  /// it is refused, and so is one whose global problem would not fit this machine's memory
+  /// (check_memory).
   /// Throws InvalidParameter: "Mesh file" (missing, unknown extension, unreadable, cells that
   /// are not quadrilaterals, gmsh not found or failing, with its exit status and first error),
   /// "Mesh size" (negative or not finite, or too many cells).
@@ -56,6 +57,17 @@ namespace pumpd::global
   /// it (<file>.opt) and the files it reads (Include, Merge, ShapeFromFile), recursively; any
   /// other file's bytes. Empty if a .geo names a file it reads by an expression (StrCat, ...).
   std::string mesh_sources_hash(const std::string &file);
+
+  /// The peak memory of the enriched global problem on a mesh of `cells` quadrilaterals [bytes]:
+  /// 250 n log2 n with n = 2 cells unknowns, the growth of a sparse direct factorization's fill on
+  /// a 2D mesh (nested dissection), its constant fitted to measured runs (docs/global-solver.md).
+  double estimated_global_bytes(double cells);
+
+  /// Refuses a mesh of `cells` cells whose global problem (estimated_global_bytes) needs more
+  /// than the 0.8 available_memory() it may take: throws InvalidParameter(name, value, what + the
+  /// sizes + remedy).
+  void check_memory(double cells, const std::string &name, const std::string &value, const std::string &what,
+                    const std::string &remedy);
 
   /// The body the mesh covers: its boundary faces as closed curves (body_from_edges).
   geometry::Body body_of(const dealii::Triangulation<2, 2> &tria);

@@ -3,16 +3,14 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <fstream>
 #include <limits>
 #include <sstream>
 #include <string>
 #include <utility>
 
-#include <unistd.h>
-
 #include "error.h"
 #include "fast_exp.h"
+#include "memory.h"
 
 namespace pumpd::local
 {
@@ -92,17 +90,6 @@ namespace pumpd::local
       return horizon / m;
     }
   } // namespace
-
-  double available_memory()
-  {
-    std::ifstream in("/proc/meminfo");
-    std::string   key, unit;
-    double        kb = 0.;
-    while (in >> key >> kb >> unit)
-      if (key == "MemAvailable:")
-        return 1024. * kb;
-    return double(sysconf(_SC_AVPHYS_PAGES)) * double(sysconf(_SC_PAGESIZE));
-  }
 
   double estimated_model_bytes(const Lattice &grid, const Stencil &st)
   {

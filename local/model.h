@@ -24,9 +24,6 @@
 
 namespace pumpd::local
 {
-  /// Memory this machine can give a new allocation [bytes]: MemAvailable of /proc/meminfo, else
-  /// the free physical pages.
-  double available_memory();
   /// What a model on this lattice and stencil and a run on it hold [bytes]: per stored node 24
   /// doubles (state, masks, the integrators' and the cycle's copies), per bond of the half stencil
   /// 5 bits (existence, initial cracks, no-fail zones, broken in two states).

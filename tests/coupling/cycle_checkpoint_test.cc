@@ -15,6 +15,7 @@ TEST(CycleCheckpoint, RoundTripIsExact)
   const auto dir = std::filesystem::temp_directory_path() / "pumpd_cycle_checkpoint_test";
   std::filesystem::create_directories(dir);
   CycleState s;
+  s.scene       = 0xfedcba9876543210ull;
   s.exchanges   = 17;
   s.finished    = true;
   s.cracks      = {{{0.1016, 0.}, {0.1016, 0.0254}, {0.10184914583, 0.02683101623}}, {{0.3, 0.}, {0.3, 0.01}}};
@@ -26,6 +27,7 @@ TEST(CycleCheckpoint, RoundTripIsExact)
   const std::string file = (dir / "checkpoint.h5").string();
   write_cycle_checkpoint(file, s);
   const auto r = read_cycle_checkpoint(file);
+  EXPECT_EQ(r.scene, s.scene);
   EXPECT_EQ(r.exchanges, s.exchanges);
   EXPECT_EQ(r.finished, s.finished);
   ASSERT_EQ(r.ends.size(), s.ends.size());
