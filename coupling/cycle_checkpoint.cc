@@ -2,6 +2,8 @@
 
 #include <hdf5.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <stdexcept>
 
@@ -97,7 +99,9 @@ namespace pumpd::coupling
       }
     H5Fclose(file);
     fail_if(crack.size() < 6 || crack.size() % 3 != 0 || boxes.size() % 5 != 0 || refined.size() % 3 != 0 ||
-              cycle.size() < 2 || (cycle.size() - 2) % 6 != 0 || scene.size() != 2,
+              cycle.size() < 2 || (cycle.size() - 2) % 6 != 0 || scene.size() != 2 ||
+              !std::all_of(scene.begin(), scene.end(),
+                           [](double half) { return half >= 0. && half < 4294967296. && half == std::floor(half); }),
             path + " is not a global-local cycle checkpoint");
     s.ends.resize((cycle.size() - 2) / 3);
     for (std::size_t i = 0; i < crack.size(); i += 3)

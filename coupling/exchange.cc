@@ -124,6 +124,7 @@ namespace pumpd::coupling
         state_lambda = lambda;
         r.iterations += relaxed.iterations;
         ++r.states;
+        r.unrelaxed += relaxed.converged ? 0 : 1;
         r.node_steps += double(relaxed.iterations) * double(model.nodes().size());
         r.seconds_pd += seconds_since(t);
 

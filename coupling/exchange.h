@@ -29,6 +29,7 @@ namespace pumpd::coupling
     double                       load_factor = 0.;  ///< lambda / lambda_c of the last state
     local::State                 state;             ///< the last PD state
     std::size_t                  states = 0, repeats = 0, iterations = 0;
+    std::size_t                  unrelaxed = 0;     ///< states not relaxed within the settings' max iterations
     double                       node_steps = 0.;   ///< sum of PD nodes x DR iterations
     double                       seconds_pd = 0., seconds_extraction = 0.;
   };

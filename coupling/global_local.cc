@@ -4,10 +4,12 @@
 #include <chrono>
 #include <cmath>
 #include <iomanip>
+#include <iostream>
 #include <limits>
 #include <optional>
 #include <ostream>
 #include <sstream>
+#include <string>
 
 #include "arrival.h"
 #include "boundary_transfer.h"
@@ -56,7 +58,7 @@ namespace pumpd::coupling
     void print_summary(const GlobalLocalResult &r, const Scene &scene, double h, double reference_box_area,
                        std::ostream &out)
     {
-      double seconds[4] = {0., 0., 0., 0.}, pd_nodes = 0., states = 0., iterations = 0.;
+      double seconds[4] = {0., 0., 0., 0.}, pd_nodes = 0., states = 0., iterations = 0., unrelaxed = 0.;
       for (const auto &e : r.exchanges)
         {
           seconds[0] += e.seconds_global;
@@ -66,6 +68,7 @@ namespace pumpd::coupling
           pd_nodes += double(e.pd_nodes) / double(r.exchanges.size());
           states += double(e.substeps);
           iterations += double(e.pd_iterations);
+          unrelaxed += double(e.unrelaxed);
         }
       if (r.reference_mean >= 0.)
         out << "pumpd-metric coupling.mean_dev_mm " << 1e3 * r.reference_mean << "\n"
@@ -82,6 +85,12 @@ namespace pumpd::coupling
             << double(r.exchanges.back().enriched_dofs) / double(r.exchanges.back().dofs) << "\n"
             << "pumpd-metric coupling.global_dofs " << r.exchanges.back().dofs << "\n"
             << "pumpd-metric pd.dr_iterations_per_state " << iterations / std::max(1., states) << "\n";
+      out << "pumpd-metric pd.unrelaxed_states " << unrelaxed << "\n";
+      if (unrelaxed > 0.)
+        std::cerr << "warning: " << unrelaxed << " of " << states
+                  << " PD states did not relax within Relaxation max iterations: their damage, and the crack path "
+                     "taken from it, are not equilibrium results; raise Relaxation max iterations"
+                  << std::endl;
       out << "pumpd-metric coupling.seconds_total " << r.seconds << "\n"
           << "pumpd-metric coupling.box_area_ratio " << r.mean_box_area / reference_box_area << "\n"
           << "pumpd-metric coupling.pd_node_steps " << r.pd_node_steps << "\n"
@@ -225,9 +234,9 @@ namespace pumpd::coupling
       std::vector<global::Crack>      cracks;
       GlobalProblem                   global;
       std::vector<TipTrack>           tracks; ///< per end of each crack: 2 crack + end
+      CycleState                      state;  ///< before the recorder: a refused resume writes nothing
       Recorder                        recorder;
       std::string                     checkpoint;
-      CycleState                      state;
       CsvFile                         steps;
       GlobalLocalResult               result;
       double                          box_area_sum = 0., length0 = 0.;
@@ -245,6 +254,34 @@ namespace pumpd::coupling
       return enriched_cracks(polylines, scene);
     }
 
+    /// A new run's state, or with `resume` the one in the output directory's checkpoint.h5, which
+    /// the same scene must have written.
+    CycleState starting_state(const Scene &scene, bool resume)
+    {
+      CycleState state;
+      state.scene = geometry_fingerprint(scene);
+      if (!resume)
+        return state;
+      if (scene.output_directory.empty())
+        throw InvalidParameter("Resume", "true", "needs an output directory holding checkpoint.h5");
+      const std::string checkpoint = scene.output_directory + "/checkpoint.h5";
+      try
+        {
+          state = read_cycle_checkpoint(checkpoint);
+        }
+      catch (const std::runtime_error &e)
+        {
+          throw InvalidParameter("Resume", "true",
+                                 std::string(e.what()) + " (needs the checkpoint.h5 a global-local run of this "
+                                                         "scene wrote in its output directory)");
+        }
+      if (state.scene != geometry_fingerprint(scene))
+        throw InvalidParameter("Resume", "true",
+                               checkpoint + " was written by a run of another scene (its mesh or initial cracks "
+                                            "differ): resume the scene that wrote it, or set Resume = false");
+      return state;
+    }
+
     Cycle::Cycle(const Scene &sc, const GlobalLocalSettings &settings, std::ostream &progress)
       : scene(sc)
       , s(settings)
@@ -255,6 +292,7 @@ namespace pumpd::coupling
       , cracks(the_cracks(sc.cracks, sc))
       , global(sc, settings.global)
       , tracks(2 * sc.cracks.size(), TipTrack(sc, settings))
+      , state(starting_state(sc, settings.cycle.resume))
       , recorder(sc, settings.cycle.resume)
       , checkpoint(recorder.writes() ? recorder.path("checkpoint.h5") : "")
     {
@@ -275,22 +313,6 @@ namespace pumpd::coupling
                                      "least a horizon apart");
       if (s.cycle.resume)
         {
-          if (checkpoint.empty())
-            throw InvalidParameter("Resume", "true", "needs an output directory holding checkpoint.h5");
-          try
-            {
-              state = read_cycle_checkpoint(checkpoint);
-            }
-          catch (const std::runtime_error &e)
-            {
-              throw InvalidParameter("Resume", "true",
-                                     std::string(e.what()) + " (needs the checkpoint.h5 a global-local run of this "
-                                                             "scene wrote in its output directory)");
-            }
-          if (state.scene != geometry_fingerprint(scene))
-            throw InvalidParameter("Resume", "true",
-                                   checkpoint + " was written by a run of another scene (its mesh or initial cracks "
-                                                "differ): resume the scene that wrote it, or set Resume = false");
           if (state.cracks.size() != cracks.size())
             throw InvalidParameter("Resume", "true",
                                    "the checkpoint holds " + std::to_string(state.cracks.size()) +
@@ -589,6 +611,7 @@ namespace pumpd::coupling
             part.decision = Decision::raise;
           record.pd_iterations      = outcome.iterations;
           record.substeps           = outcome.states;
+          record.unrelaxed          = outcome.unrelaxed;
           record.repeats            = outcome.repeats;
           record.lambda             = lambda;
           record.load_factor        = lambda / part.tip.critical_load_factor;
@@ -751,7 +774,6 @@ namespace pumpd::coupling
       if (recorder.writes())
         {
           CsvFile boxes_table(recorder.path("boxes.csv"), "box,x_min_m,y_min_m,x_max_m,y_max_m,moved,tip_end,crack");
-          state.scene     = geometry_fingerprint(scene);
           state.exchanges = n + 1;
           state.finished  = !stop.empty();
           state.cracks    = polylines();
@@ -792,7 +814,7 @@ namespace pumpd::coupling
             out << "box [" << box.x_min << ", " << box.x_max << "] x [" << box.y_min << ", " << box.y_max << "]"
                 << (tracks[part.track].boxes.moved() ? " new" : "") << "  delta " << 1e3 * record.horizon << " mm, "
                 << record.pd_nodes << " PD nodes, " << record.substeps << " states, " << record.pd_iterations
-                << " DR its";
+                << " DR its" << (record.unrelaxed > 0 ? " (" + std::to_string(record.unrelaxed) + " not relaxed)" : "");
           else if (part.by_lefm)
             out << "LEFM increment (ligament below " << s.cycle.resolution.clearance_over_horizon
                 << " horizons of the finest box)";

@@ -89,6 +89,7 @@ namespace pumpd::coupling
     std::string     decision;                            ///< accept | truncate | waits | lefm | ...
     geometry::Box   box;
     std::size_t     pd_nodes = 0, pd_iterations = 0, substeps = 0, repeats = 0;
+    std::size_t     unrelaxed = 0; ///< PD states not relaxed within Relaxation max iterations
     unsigned int    dofs = 0, enriched_dofs = 0;
     double          seconds_global = 0., seconds_point_evaluation = 0., seconds_pd = 0., seconds_extraction = 0.;
   };

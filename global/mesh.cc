@@ -452,7 +452,7 @@ namespace pumpd::global
   double estimated_global_bytes(double cells)
   {
     const double n = 2. * std::max(cells, 1.);
-    return 250. * n * std::log2(std::max(n, 2.));
+    return 0.25e9 + 250. * n * std::log2(std::max(n, 2.));
   }
 
   void check_memory(double cells, const std::string &name, const std::string &value, const std::string &what,

@@ -58,9 +58,10 @@ namespace pumpd::global
   /// other file's bytes. Empty if a .geo names a file it reads by an expression (StrCat, ...).
   std::string mesh_sources_hash(const std::string &file);
 
-  /// The peak memory of the enriched global problem on a mesh of `cells` quadrilaterals [bytes]:
-  /// 250 n log2 n with n = 2 cells unknowns, the growth of a sparse direct factorization's fill on
-  /// a 2D mesh (nested dissection), its constant fitted to measured runs (docs/global-solver.md).
+  /// The peak memory of a run with the enriched global problem on a mesh of `cells` quadrilaterals
+  /// [bytes]: the program's own 0.25 GB and 250 n log2 n with n = 2 cells unknowns, the growth of a
+  /// sparse direct factorization's fill on a 2D mesh (nested dissection), its constant fitted to
+  /// measured runs (docs/global-solver.md).
   double estimated_global_bytes(double cells);
 
   /// Refuses a mesh of `cells` cells whose global problem (estimated_global_bytes) needs more

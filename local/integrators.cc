@@ -184,7 +184,7 @@ namespace pumpd::local
     model.compute_forces(s);
     check_finite(model, s);
     double damping = 0.;
-    for (std::size_t it = 0; it < max_it; ++it)
+    for (std::size_t it = 0;; ++it)
       {
         double f2 = 0.;
         for (std::size_t i : nodes)
@@ -192,11 +192,9 @@ namespace pumpd::local
         const double u2   = deformation.squared(s);
         result.iterations = it;
         result.residual   = std::sqrt(f2) / (lambda * std::sqrt(u2) + 1e-300);
-        if ((result.residual < tol || f2 == 0.) && result.servo_error < servo.tolerance)
-          {
-            result.converged = true;
-            break;
-          }
+        result.converged  = (result.residual < tol || f2 == 0.) && result.servo_error < servo.tolerance;
+        if (result.converged || it == max_it)
+          break;
         for (std::size_t i : nodes)
           {
             if (it == 0) // v^{1/2} = F^0 / (2 rho)

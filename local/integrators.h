@@ -40,7 +40,7 @@ namespace pumpd::local
 
   struct RelaxationResult
   {
-    std::size_t iterations = 0;
+    std::size_t iterations = 0;   ///< displacement updates made (max_iterations if not converged)
     double      residual   = 0.; ///< |f_free| / (stiffness scale |u - u_rigid|), u_rigid: best-fit rigid motion
     double      servo_error = 0.; ///< the servo's last relative error (0 without one)
     bool        converged  = false;
