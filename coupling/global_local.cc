@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <iomanip>
 #include <iostream>
 #include <limits>
@@ -258,8 +259,9 @@ namespace pumpd::coupling
     /// the same scene must have written.
     CycleState starting_state(const Scene &scene, bool resume)
     {
-      CycleState state;
-      state.scene = geometry_fingerprint(scene);
+      const std::uint64_t fingerprint = geometry_fingerprint(scene);
+      CycleState          state;
+      state.scene = fingerprint;
       if (!resume)
         return state;
       if (scene.output_directory.empty())
@@ -275,7 +277,7 @@ namespace pumpd::coupling
                                  std::string(e.what()) + " (needs the checkpoint.h5 a global-local run of this "
                                                          "scene wrote in its output directory)");
         }
-      if (state.scene != geometry_fingerprint(scene))
+      if (state.scene != fingerprint)
         throw InvalidParameter("Resume", "true",
                                checkpoint + " was written by a run of another scene (its mesh or initial cracks "
                                             "differ): resume the scene that wrote it, or set Resume = false");
