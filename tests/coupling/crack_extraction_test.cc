@@ -270,6 +270,32 @@ TEST(CrackExtraction, TracesTheTrueIncrementWithinOneSpacing)
   test::metric("coupling.extraction_max_err_over_h", worst);
 }
 
+// A crack that kinks at the tip by more than the later steps may turn (45 degrees): the first step
+// takes the kink, up to what the transverse window reaches (atan(delta / 2h): 63 degrees for m = 4,
+// 76 for m = 8). The first segment's direction is the kink a run reports against the maximum hoop
+// stress angle (up to 70.5 degrees); it lies within 3 degrees of the true kink, the angle one
+// spacing subtends at the end of a first segment of about a horizon and a half, and the path within
+// one spacing of the truth.
+TEST(CrackExtraction, TheFirstStepTakesTheKinkAtTheTip)
+{
+  for (const auto &[kink, m] : {std::pair{-53., 4}, {60., 4}, {-66., 8}})
+  {
+    const Point d = along(10.), tip{0.0203, 0.0241};
+    Scene       s = make_scene("kink " + std::to_string(int(kink)) + " deg at the tip, m " + std::to_string(m), m, tip,
+                               d, {tip, tip + 0.016 * rotated(d, kink)});
+    s.nx = s.ny = 64;
+    const CrackIncrement inc = extract_crack(synthetic_damage(s), s.tip, s.direction, settings_for(s));
+    ASSERT_GE(inc.path.size(), 2u) << s.name << ": " << inc.stop_reason;
+    const Point  first = inc.path[1] - inc.path[0];
+    const double angle = std::atan2(geometry::cross(d, first), geometry::dot(d, first)) * 180. / pi;
+    const double error = std::max({one_way(inc.path, s.increment), one_way(s.increment, inc.path)}) / h;
+    std::cout << s.name << ": first segment " << angle << " deg, path error " << error << " h\n";
+    test::metric("coupling.extraction_kink_err_deg_" + std::to_string(int(std::abs(kink))), std::abs(angle - kink));
+    EXPECT_NEAR(angle, kink, 3.) << s.name;
+    EXPECT_LE(error, 1.) << s.name;
+  }
+}
+
 TEST(CrackExtraction, NoGrowthWhenTheDamageLiesBehindTheTip)
 {
   for (int m : {4, 8})
