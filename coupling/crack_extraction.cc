@@ -291,8 +291,8 @@ namespace pumpd::coupling
       // maximum hoop stress criterion): its turn is bounded by the window alone, atan(w / step).
       const Point  c    = q + runs.front().centroid() * normal(t);
       const double turn = std::atan2(geometry::cross(t, c - p), geometry::dot(t, c - p));
-      const bool   kink = traced.size() == 1;
-      t                 = rotated(t, kink ? turn : std::clamp(turn, -s.max_turn, s.max_turn));
+      const bool   from_tip = traced.size() == 1;
+      t = rotated(t, from_tip ? turn : std::clamp(turn, -s.max_turn, s.max_turn));
       traced.push_back(p + geometry::norm(c - p) * t);
       if (geometry::length(traced) > perimeter)
         reason = "the traced ridge is longer than the field's perimeter";
