@@ -234,6 +234,8 @@ namespace pumpd::coupling
                                  " (0: the horizon, which must then be given)");
       if (!(s.max_turn > 0. && s.max_turn < 0.5 * std::acos(-1.)))
         throw InvalidParameter("Maximum turn", to_text(s.max_turn), "must lie in (0, pi/2) rad");
+      if (!(s.max_first_turn > 0. && s.max_first_turn <= 0.5 * std::acos(-1.)))
+        throw InvalidParameter("Maximum first turn", to_text(s.max_first_turn), "must lie in (0, pi/2] rad");
       if (!std::isfinite(direction.x) || !std::isfinite(direction.y) || geometry::norm(direction) == 0.)
         throw InvalidParameter("Tip direction", to_text(direction), "must be a finite, non-zero vector");
       if (!std::isfinite(tip.x) || !std::isfinite(tip.y))
@@ -287,12 +289,12 @@ namespace pumpd::coupling
       }
       if (runs.empty())
         break;
-      // The first step leaves the tip, where the crack kinks (by up to 70.5 degrees under the
-      // maximum hoop stress criterion): its turn is bounded by the window alone, atan(w / step).
-      const Point  c    = q + runs.front().centroid() * normal(t);
-      const double turn = std::atan2(geometry::cross(t, c - p), geometry::dot(t, c - p));
-      const bool   from_tip = traced.size() == 1;
-      t = rotated(t, from_tip ? turn : std::clamp(turn, -s.max_turn, s.max_turn));
+      // A crack kinks at its tip by up to 70.5 degrees (maximum hoop stress criterion): the first
+      // step has its own bound, by default what the window reaches, atan(w / step).
+      const Point  c     = q + runs.front().centroid() * normal(t);
+      const double turn  = std::atan2(geometry::cross(t, c - p), geometry::dot(t, c - p));
+      const double limit = traced.size() == 1 ? s.max_first_turn : s.max_turn;
+      t                  = rotated(t, std::clamp(turn, -limit, limit));
       traced.push_back(p + geometry::norm(c - p) * t);
       if (geometry::length(traced) > perimeter)
         reason = "the traced ridge is longer than the field's perimeter";

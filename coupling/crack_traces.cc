@@ -119,9 +119,11 @@ namespace pumpd::coupling
     catch (const CrackBranching &)
       {
         // Another crack's new growth crosses the band of this tip's accepted path: traced on from
-        // the accepted end instead.
-        const Point end = tip.path.back(), last = tip.path[tip.path.size() - 2];
-        const auto  on  = extract_crack(own, end, (1. / geometry::norm(end - last)) * (end - last), settings);
+        // the accepted end instead, which the crack runs through (no kink there).
+        const Point        end = tip.path.back(), last = tip.path[tip.path.size() - 2];
+        ExtractionSettings on_settings = settings;
+        on_settings.max_first_turn     = settings.max_turn;
+        const auto         on = extract_crack(own, end, (1. / geometry::norm(end - last)) * (end - last), on_settings);
         increment = {Polyline(tip.path.begin() + long(tip.initial_size) - 1, tip.path.end()), on.stop_reason};
         increment.path.insert(increment.path.end(), on.path.begin() + 1, on.path.end());
       }

@@ -300,6 +300,25 @@ TEST(CrackExtraction, TheFirstStepTakesTheKinkAtTheTip)
   }
 }
 
+// Traced on from a point the crack runs through (coupling/crack_traces.h), the first step is bound
+// like any other (Maximum first turn = Maximum turn, 45 degrees): a 60-degree turn of the ridge
+// there is not taken at once, the first segment turns by at most 45 degrees.
+TEST(CrackExtraction, AFirstTurnBoundHoldsTheFirstStep)
+{
+  const Point d = along(10.), tip{0.0203, 0.0241};
+  Scene       s = make_scene("kink 60 deg, first turn bound 45 deg", 4, tip, d, {tip, tip + 0.016 * rotated(d, 60.)});
+  s.nx = s.ny          = 64;
+  ExtractionSettings e = settings_for(s);
+  e.max_first_turn     = e.max_turn;
+  const CrackIncrement inc = extract_crack(synthetic_damage(s), s.tip, s.direction, e);
+  ASSERT_GE(inc.path.size(), 2u) << inc.stop_reason;
+  const Point  first = inc.path[1] - inc.path[0];
+  const double angle = std::atan2(geometry::cross(d, first), geometry::dot(d, first)) * 180. / pi;
+  std::cout << s.name << ": first segment " << angle << " deg, " << inc.path.size() << " vertices\n";
+  EXPECT_LE(angle, 45. + 1e-9);
+  EXPECT_GT(angle, 0.);
+}
+
 TEST(CrackExtraction, NoGrowthWhenTheDamageLiesBehindTheTip)
 {
   for (int m : {4, 8})
@@ -403,6 +422,10 @@ TEST(CrackExtraction, RefusesBadSettings)
   EXPECT_THROW(extract_crack(field, s.tip, s.direction, bad([](auto &e) { e.search_half_width = NAN; })),
                InvalidParameter);
   EXPECT_THROW(extract_crack(field, s.tip, s.direction, bad([](auto &e) { e.max_turn = 2.; })), InvalidParameter);
+  EXPECT_THROW(extract_crack(field, s.tip, s.direction, bad([](auto &e) { e.max_first_turn = 0.; })),
+               InvalidParameter);
+  EXPECT_THROW(extract_crack(field, s.tip, s.direction, bad([](auto &e) { e.max_first_turn = 1.6; })),
+               InvalidParameter);
   EXPECT_THROW(extract_crack(field, s.tip, {0., 0.}, good), InvalidParameter);
   EXPECT_THROW(extract_crack(field, {-1., 0.}, s.direction, good), InvalidParameter);
   DamageField wrong = field;
