@@ -9,8 +9,8 @@
 //    none: the ridge ends near q; two or more: the crack branches (thrown, never guessed);
 //    one: the next vertex is its centroid c = q + eta_c n, eta_c = int eta (D - D_c) / int (D - D_c),
 //    and t turns towards c, by at most `max_turn` after the first step and `max_first_turn` on
-//    the first (from a crack tip it takes the kink: up to atan(w / s), what the window reaches;
-//    traced on from a point the crack runs through, it turns as any step);
+//    the first (by default no bound but the window's, atan(w / s): from a crack tip the first
+//    step takes the kink; CrackTraces' carry-on from an accepted end sets it to `max_turn`);
 // 3. the new tip: marching from the last vertex along t by h/8, the first point where the ridge
 //    damage R(x) = max_{|eta| <= h} D(x + eta n) drops to half the crack-face damage (the median R
 //    over the last horizon of the ridge), interpolated linearly: a node at the tip of a straight
@@ -50,7 +50,7 @@ namespace pumpd::coupling
     double search_half_width = 0.;  ///< half width of the transverse search window [m]; 0: the horizon
     double horizon           = 0.;  ///< delta [m], sets default widths
     double max_turn          = 0.785398163397448; ///< largest turn of the tip direction per step after the first [rad] (45 degrees)
-    double max_first_turn    = 1.5707963267948966; ///< largest turn of the first step [rad]; pi/2: the window's reach
+    double max_first_turn    = 1.5707963267948966; ///< largest turn of the first step [rad]; pi/2: no bound but the window's, atan(w / step)
     double simplification    = 0.;  ///< Douglas-Peucker tolerance [m]; 0: half a spacing
     std::vector<geometry::Polyline> faces; ///< other cracks, which the trace ends on
   };

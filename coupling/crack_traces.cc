@@ -119,7 +119,8 @@ namespace pumpd::coupling
     catch (const CrackBranching &)
       {
         // Another crack's new growth crosses the band of this tip's accepted path: traced on from
-        // the accepted end instead, which the crack runs through (no kink there).
+        // the accepted end instead: a point on the crack, not a fresh tip, so its first turn is
+        // bound like any step's.
         const Point        end = tip.path.back(), last = tip.path[tip.path.size() - 2];
         ExtractionSettings on_settings = settings;
         on_settings.max_first_turn     = settings.max_turn;
