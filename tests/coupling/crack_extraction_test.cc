@@ -44,6 +44,14 @@ namespace
     return {c.x * t.x - c.y * t.y, c.y * t.x + c.x * t.y};
   }
 
+  /// The angle [degrees] from the tip direction d to the increment's first segment, > 0
+  /// counter-clockwise.
+  double first_segment_angle(const CrackIncrement &inc, Point d)
+  {
+    const Point first = inc.path[1] - inc.path[0];
+    return std::atan2(geometry::cross(d, first), geometry::dot(d, first)) * 180. / pi;
+  }
+
   /// A synthetic PD damage field and the truth it comes from.
   struct Scene
   {
@@ -290,8 +298,7 @@ TEST(CrackExtraction, TheFirstStepTakesTheKinkAtTheTip)
     s.nx = s.ny = 64;
     const CrackIncrement inc = extract_crack(synthetic_damage(s), s.tip, s.direction, settings_for(s));
     ASSERT_GE(inc.path.size(), 2u) << s.name << ": " << inc.stop_reason;
-    const Point  first = inc.path[1] - inc.path[0];
-    const double angle = std::atan2(geometry::cross(d, first), geometry::dot(d, first)) * 180. / pi;
+    const double angle = first_segment_angle(inc, d);
     const double error = std::max({one_way(inc.path, s.increment), one_way(s.increment, inc.path),
                                    geometry::norm(inc.path.back() - s.increment.back())}) /
                          h;
@@ -314,8 +321,7 @@ TEST(CrackExtraction, AFirstTurnBoundHoldsTheFirstStep)
   e.max_first_turn     = e.max_turn;
   const CrackIncrement inc = extract_crack(synthetic_damage(s), s.tip, s.direction, e);
   ASSERT_GE(inc.path.size(), 2u) << inc.stop_reason;
-  const Point  first = inc.path[1] - inc.path[0];
-  const double angle = std::atan2(geometry::cross(d, first), geometry::dot(d, first)) * 180. / pi;
+  const double angle = first_segment_angle(inc, d);
   std::cout << s.name << ": first segment " << angle << " deg, " << inc.path.size() << " vertices\n";
   EXPECT_NEAR(angle, 45., 0.5);
 }

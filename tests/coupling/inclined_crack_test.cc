@@ -233,7 +233,7 @@ TEST(InclinedCrackStudy, DISABLED_KinkAgainstHorizon)
 
 // Study (ctest -L study): the first PD kink against theta_c as the crack grows against the horizon,
 // delta = 1 mm, m = 4 (the box, advance and margin scale with delta as above), crack half-lengths
-// a = 10 to 30 mm (a / delta = 10 to 30): cracks.inclined.kink_err_deg_a<a>mm (the larger of
+// a = 10 to 30 mm (a / delta = 10 to 30): cracks.inclined.kink_err_deg_a<a in mm> (the larger of
 // the two tips that grew; not printed if neither grew), and over a / delta >= 16 the mean of the
 // signed errors kink - theta_c of every tip that grew, cracks.inclined.kink_mean_signed_err_deg_long,
 // and the largest error, cracks.inclined.kink_max_err_deg_long: the mean tells whether the kinks
@@ -271,7 +271,7 @@ TEST(InclinedCrackStudy, DISABLED_KinkAgainstCrackLength)
             }
         }
       if (accepted > 0)
-        test::metric("cracks.inclined.kink_err_deg_a" + std::to_string(int(std::round(a * 1e3))) + "mm", error);
+        test::metric("cracks.inclined.kink_err_deg_a" + std::to_string(int(std::round(a * 1e3))), error);
     }
   ASSERT_GT(n, 0u);
   test::metric("cracks.inclined.kink_mean_signed_err_deg_long", sum / double(n));
