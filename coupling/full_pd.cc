@@ -234,6 +234,22 @@ namespace pumpd::coupling
       return Seed{mouth, lattice.position(*best), (1. / geometry::norm(moment)) * moment};
     }
 
+    /// The most damaged of the nodes `eligible` that lie at least a horizon inside the body and
+    /// whose damage reaches `threshold`: where a crack has formed with no mouth on the boundary.
+    std::optional<std::size_t> interior_crack_node(const local::PdModel &model, const DamageField &field,
+                                                   const std::vector<char> &eligible, double threshold,
+                                                   double horizon)
+    {
+      const auto &lattice = model.lattice();
+      const auto  damage  = [&](std::size_t i) { return field.values[lattice.row(i) * field.nx + lattice.column(i)]; };
+      std::optional<std::size_t> best;
+      for (std::size_t i : model.nodes())
+        if (eligible[i] && damage(i) >= threshold && model.region().body.clearance(lattice.position(i)) >= horizon &&
+            (!best || damage(i) > damage(*best)))
+          best = i;
+      return best;
+    }
+
     /// Thrown by the servo when the drive it needs leaves the range a softening body allows.
     struct ServoLost
     {};
@@ -683,6 +699,15 @@ namespace pumpd::coupling
           }
         if (stop.empty())
           stop = no_fail_arrival(paths(result.path));
+        // A crack that forms inside the body has no mouth to trace it from.
+        if (stop.empty() && initial.empty() && !seed)
+          if (const auto inside = interior_crack_node(model, field, seedable, pd.crack_damage, pd.horizon))
+            {
+              result.interior_crack = model.lattice().position(*inside);
+              stop = "a crack formed inside the body, at " + to_text(*result.interior_crack) +
+                     ", with no mouth on the outline or a hole's rim: full PD traces a crack from a mouth, not an "
+                     "interior one (global-local nucleates and grows interior cracks)";
+            }
         const double new_length = initial.empty() ? geometry::length(result.path) : traces.length();
         if (initial.empty() && length == 0. && new_length > 0.)
           note_compression(s);

@@ -26,6 +26,9 @@
 // boundary (damage at least the crack threshold, a horizon clear of the prescribed regions and
 // no-fail zones), along the direction to the damage-weighted centroid of the crack nodes within
 // three horizons of it; mouth and direction follow the damage until the crack is a horizon long.
+// A crack that forms inside the body instead (damage at the threshold a horizon or more from the
+// boundary while no node near it qualifies as a mouth) is not traced: the run stops there and
+// names the place (`interior_crack`).
 // Its steps are taken in d until it forms (the mouth is not known before), then, under crack-mouth
 // control (below), in the opening of the mouth where it formed, if the gauges across that mouth
 // opened over the step in which it formed (else in d to the end). The run stops where every tip
@@ -76,6 +79,7 @@
 
 #include <cstddef>
 #include <iosfwd>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -145,6 +149,8 @@ namespace pumpd::coupling
     geometry::Polyline              path;           ///< the first crack
     std::vector<geometry::Polyline> paths;          ///< every crack, in the scene's order
     bool                            joined = false; ///< a tip joined another crack
+    /// Without an initial crack: where one formed inside the body, with no mouth (the run stops).
+    std::optional<geometry::Point> interior_crack;
     std::vector<FullPdStep>         steps;
     std::string                     stop_reason;
     std::size_t                     nodes      = 0;

@@ -3,7 +3,8 @@
 // initial tip); the outputs are written; crack-mouth-opening control traces the snap-back that
 // load-point control jumps; bad input is refused naming the parameter. The L-panel without a
 // crack cracks at its corner, and its elastic state is in equilibrium (the XFEM's stiffness). The
-// unnotched beam cracks up its mid-span to the pad's no-fail zone.
+// unnotched beam cracks up its mid-span to the pad's no-fail zone. A crack that forms inside the
+// Brazilian disc stops the run with its place.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -240,6 +241,33 @@ TEST(FullPd, AnUnnotchedBeamCracksUpItsMidSpanToThePad)
     EXPECT_LE(std::abs(x.x - mid_span), 0.5 * p.pd.horizon) << geometry::to_text(x);
   EXPECT_NE(r.stop_reason.find("no-fail zone of load"), std::string::npos) << r.stop_reason;
   EXPECT_GE(r.path.back().y, depth - no_fail_radius - p.pd.horizon);
+}
+
+// The Brazilian disc (prm/brazilian-disc.prm) in full PD at delta = 4 mm, m = 4 (h = 1 mm, ~7900
+// nodes), its arcs pressed together by displacement (full PD takes no tractions): the tension across
+// the loaded diameter breaks the disc inside, away from its rim. Such a crack has no mouth to trace
+// it from, and the run stops at the state in which it forms, saying where, rather than go on with a
+// crack of length zero.
+TEST(FullPd, ACrackFormedInsideTheDiscStopsTheRunAndSaysWhere)
+{
+  auto p                    = test::scene_file("prm/brazilian-disc.prm", "");
+  p.method                  = "full-pd";
+  p.scene.traction          = "";
+  p.scene.displacement      = "top arc: uy = -1e-4 * lambda; bottom arc: uy = 1e-4 * lambda; west: ux = 0";
+  p.pd.horizon              = 0.004;
+  p.full_pd.control         = "load point";
+  p.full_pd.max_displacement = 1e-3;
+  std::ostringstream log;
+  const auto         r = run_case(p, log);
+  std::cout << log.str();
+  EXPECT_NE(r.stop_reason.find("a crack formed inside the body"), std::string::npos) << r.stop_reason;
+  EXPECT_TRUE(r.path.empty());
+  ASSERT_TRUE(r.interior_crack);
+  const double radius = 0.05;
+  EXPECT_LT(geometry::norm(*r.interior_crack), radius - p.pd.horizon);
+  EXPECT_LT(std::abs(r.interior_crack->x), 0.25 * radius) << "the tension lies along the loaded diameter";
+  ASSERT_FALSE(r.steps.empty());
+  EXPECT_LT(r.steps.back().displacement, p.full_pd.max_displacement);
 }
 
 // The L-panel's first, elastic state against the global problem: full PD of the whole panel at
