@@ -280,12 +280,15 @@ namespace pumpd::coupling
       if (runs.size() > 1)
       {
         std::ostringstream m;
-        m << "the damage ridge splits into " << runs.size() << " branches across " << to_text(q)
+        m << ridge_splits << " into " << runs.size() << " branches across " << to_text(q)
           << " (transverse offsets";
         for (const Run &r : runs)
           m << " " << r.centroid();
-        m << " m): crack branching is not extracted";
-        throw CrackBranching(m.str());
+        m << " m)";
+        if (!s.branch_ends_trace)
+          throw CrackBranching(m.str() + ": crack branching is not extracted");
+        reason = m.str();
+        break;
       }
       if (runs.empty())
         break;
@@ -317,7 +320,7 @@ namespace pumpd::coupling
         if (!std::isfinite(next))
         {
           reason = damage.outside(x) ? "the ridge reaches the edge of the damage field"
-                                     : "the ridge reaches a region without material (a hole)";
+                                     : "the ridge reaches a region without material (a hole, or beyond the outline)";
           break;
         }
         u = k * h / 8.;

@@ -6,7 +6,8 @@
 //    averaged over |tau| <= h along t: noise is damped and an isolated damaged node stays below
 //    the threshold D_c (the band of a crack face is at least two nodes wide and continues);
 // 2. its runs above D_c (gaps shorter than a spacing closed, runs narrower than a spacing ignored):
-//    none: the ridge ends near q; two or more: the crack branches (thrown, never guessed);
+//    none: the ridge ends near q; two or more: the crack branches (thrown, never guessed; or,
+//    with `branch_ends_trace`, the trace ends at p);
 //    one: the next vertex is its centroid c = q + eta_c n, eta_c = int eta (D - D_c) / int (D - D_c),
 //    and t turns towards c, by at most `max_turn` after the first step and `max_first_turn` on
 //    the first (by default no bound but the window's, atan(w / s): from a crack tip the first
@@ -53,11 +54,14 @@ namespace pumpd::coupling
     double max_first_turn    = 1.5707963267948966; ///< largest turn of the first step [rad]; pi/2: no bound but the window's, atan(w / step)
     double simplification    = 0.;  ///< Douglas-Peucker tolerance [m]; 0: half a spacing
     std::vector<geometry::Polyline> faces; ///< other cracks, which the trace ends on
+    bool branch_ends_trace = false; ///< a split ends the trace before it (stop reason `ridge_splits`) instead of throwing
   };
 
   /// The stop reason (its start) of a trace that ends in the material: no run above the threshold
   /// across the predictor, within the turn limit.
   inline constexpr char ridge_ends[] = "the damage ridge ends";
+  /// The stop reason (its start) of a trace that ends where the ridge splits (`branch_ends_trace`).
+  inline constexpr char ridge_splits[] = "the damage ridge splits";
   /// The stop reason of a trace that ends on one of the `faces`.
   inline constexpr char reaches_face[] = "the damage ridge reaches another crack's face";
 

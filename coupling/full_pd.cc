@@ -234,20 +234,50 @@ namespace pumpd::coupling
       return Seed{mouth, lattice.position(*best), (1. / geometry::norm(moment)) * moment};
     }
 
-    /// The most damaged of the nodes `eligible` that lie at least a horizon inside the body and
-    /// whose damage reaches `threshold`: where a crack has formed with no mouth on the boundary.
-    std::optional<std::size_t> interior_crack_node(const local::PdModel &model, const DamageField &field,
-                                                   const std::vector<char> &eligible, double threshold,
-                                                   double horizon)
+    /// A crack formed inside the body, with no mouth on the boundary.
+    struct InteriorCrack
+    {
+      Point              site; ///< its most damaged node
+      geometry::Polyline path; ///< from one tip through the site to the other
+      std::string        ends; ///< why each way's trace ended
+    };
+
+    /// The crack in `field` at the most damaged of the nodes `eligible` that lie at least a horizon
+    /// inside the body and whose damage reaches the threshold: traced both ways from that node
+    /// along the principal axis of the damage above the threshold within three horizons of it
+    /// (the direction of its second moment's largest eigenvalue), each way until its ridge ends or
+    /// splits. None while no node qualifies.
+    std::optional<InteriorCrack> interior_crack(const local::PdModel &model, const DamageField &field,
+                                                const std::vector<char> &eligible, ExtractionSettings extraction)
     {
       const auto &lattice = model.lattice();
       const auto  damage  = [&](std::size_t i) { return field.values[lattice.row(i) * field.nx + lattice.column(i)]; };
+      const auto  cracked = [&](std::size_t i) { return eligible[i] && damage(i) >= extraction.threshold; };
       std::optional<std::size_t> best;
       for (std::size_t i : model.nodes())
-        if (eligible[i] && damage(i) >= threshold && model.region().body.clearance(lattice.position(i)) >= horizon &&
+        if (cracked(i) && model.region().body.clearance(lattice.position(i)) >= extraction.horizon &&
             (!best || damage(i) > damage(*best)))
           best = i;
-      return best;
+      if (!best)
+        return std::nullopt;
+      const Point site = lattice.position(*best);
+      double      sxx = 0., sxy = 0., syy = 0.;
+      for (std::size_t i : model.nodes())
+        if (const Point r = lattice.position(i) - site; cracked(i) && geometry::norm(r) < 3. * extraction.horizon)
+          {
+            const double weight = damage(i) - extraction.threshold;
+            sxx += weight * r.x * r.x;
+            sxy += weight * r.x * r.y;
+            syy += weight * r.y * r.y;
+          }
+      const double angle = 0.5 * std::atan2(2. * sxy, sxx - syy);
+      const Point  axis{std::cos(angle), std::sin(angle)};
+      extraction.branch_ends_trace = true;
+      const auto ahead  = extract_crack(field, site, axis, extraction);
+      const auto behind = extract_crack(field, site, -1. * axis, extraction);
+      InteriorCrack crack{site, {behind.path.rbegin(), behind.path.rend()}, ahead.stop_reason + "; " + behind.stop_reason};
+      crack.path.insert(crack.path.end(), ahead.path.begin() + 1, ahead.path.end());
+      return crack;
     }
 
     /// Thrown by the servo when the drive it needs leaves the range a softening body allows.
@@ -701,12 +731,15 @@ namespace pumpd::coupling
           stop = no_fail_arrival(paths(result.path));
         // A crack that forms inside the body has no mouth to trace it from.
         if (stop.empty() && initial.empty() && !seed)
-          if (const auto inside = interior_crack_node(model, field, seedable, pd.crack_damage, pd.horizon))
+          if (const auto inside = interior_crack(model, field, seedable, extraction))
             {
-              result.interior_crack = model.lattice().position(*inside);
-              stop = "a crack formed inside the body, at " + to_text(*result.interior_crack) +
-                     ", with no mouth on the outline or a hole's rim: full PD traces a crack from a mouth, not an "
-                     "interior one (global-local nucleates and grows interior cracks)";
+              result.interior_crack = inside->site;
+              result.path           = inside->path;
+              increment.stop_reason = inside->ends;
+              stop = "a crack formed inside the body at " + to_text(inside->site) + ", from " +
+                     to_text(inside->path.front()) + " to " + to_text(inside->path.back()) + " (" + inside->ends +
+                     "): full PD grows a crack from a mouth on the outline or a hole's rim, not one it forms "
+                     "inside the body (global-local nucleates and grows interior cracks)";
             }
         const double new_length = initial.empty() ? geometry::length(result.path) : traces.length();
         if (initial.empty() && length == 0. && new_length > 0.)

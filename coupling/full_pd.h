@@ -27,8 +27,9 @@
 // no-fail zones), along the direction to the damage-weighted centroid of the crack nodes within
 // three horizons of it; mouth and direction follow the damage until the crack is a horizon long.
 // A crack that forms inside the body instead (damage at the threshold a horizon or more from the
-// boundary while no node near it qualifies as a mouth) is not traced: the run stops there and
-// names the place (`interior_crack`).
+// boundary while no node near it qualifies as a mouth) is traced both ways from its most damaged
+// node (`interior_crack`), along the principal axis of the damage around it, each way until its
+// ridge ends or splits; full PD does not grow it on: the run stops in the state it formed in.
 // Its steps are taken in d until it forms (the mouth is not known before), then, under crack-mouth
 // control (below), in the opening of the mouth where it formed, if the gauges across that mouth
 // opened over the step in which it formed (else in d to the end). The run stops where every tip

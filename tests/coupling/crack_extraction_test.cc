@@ -368,6 +368,19 @@ TEST(CrackExtraction, RefusesABranchingRidge)
       std::cout << "m " << m << ": " << e.what() << "\n";
       EXPECT_NE(std::string(e.what()).find("branches"), std::string::npos);
     }
+
+    // Asked to, the trace ends where the split is seen instead: on the stem's line, past the fork
+    // by less than the window's reach (a horizon) plus two spacings (the branches first lie within
+    // one run across the window).
+    ExtractionSettings to_the_fork = settings_for(s);
+    to_the_fork.branch_ends_trace  = true;
+    const auto stem                = extract_crack(synthetic_damage(s), s.tip, s.direction, to_the_fork);
+    std::cout << "m " << m << ", to the fork: " << stem.stop_reason << ", end " << geometry::to_text(stem.path.back())
+              << " (fork " << geometry::to_text(fork) << ")\n";
+    EXPECT_EQ(stem.stop_reason.rfind(ridge_splits, 0), 0u) << stem.stop_reason;
+    EXPECT_LT(distance_to(stem.path.back(), {s.tip, fork + 2. * m * h * d}), 0.5 * h);
+    EXPECT_LT(geometry::norm(stem.path.back() - fork), m * h + 2. * h);
+    EXPECT_GT(stem.length(), h);
   }
 }
 

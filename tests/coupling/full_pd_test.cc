@@ -4,7 +4,7 @@
 // load-point control jumps; bad input is refused naming the parameter. The L-panel without a
 // crack cracks at its corner, and its elastic state is in equilibrium (the XFEM's stiffness). The
 // unnotched beam cracks up its mid-span to the pad's no-fail zone. A crack that forms inside the
-// Brazilian disc stops the run with its place.
+// Brazilian disc is traced through its centre and stops the run.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -245,29 +245,36 @@ TEST(FullPd, AnUnnotchedBeamCracksUpItsMidSpanToThePad)
 
 // The Brazilian disc (prm/brazilian-disc.prm) in full PD at delta = 4 mm, m = 4 (h = 1 mm, ~7900
 // nodes), its arcs pressed together by displacement (full PD takes no tractions): the tension across
-// the loaded diameter breaks the disc inside, away from its rim. Such a crack has no mouth to trace
-// it from, and the run stops at the state in which it forms, saying where, rather than go on with a
-// crack of length zero.
-TEST(FullPd, ACrackFormedInsideTheDiscStopsTheRunAndSaysWhere)
+// the loaded diameter breaks the disc inside, away from its rim, in one state. That crack has no
+// mouth to grow it from: it is traced both ways from its most damaged node, through the centre,
+// where the tension is largest, and the run stops in that state, saying where.
+TEST(FullPd, ACrackFormedInsideTheDiscIsTracedAndStopsTheRun)
 {
-  auto p                    = test::scene_file("prm/brazilian-disc.prm", "");
-  p.method                  = "full-pd";
-  p.scene.traction          = "";
-  p.scene.displacement      = "top arc: uy = -1e-4 * lambda; bottom arc: uy = 1e-4 * lambda; west: ux = 0";
-  p.pd.horizon              = 0.004;
-  p.full_pd.control         = "load point";
+  auto p                     = test::scene_file("prm/brazilian-disc.prm", "");
+  p.method                   = "full-pd";
+  p.scene.traction           = "";
+  p.scene.displacement       = "top arc: uy = -1e-4 * lambda; bottom arc: uy = 1e-4 * lambda; west: ux = 0";
+  p.pd.horizon               = 0.004;
+  p.full_pd.control          = "load point";
   p.full_pd.max_displacement = 1e-3;
   std::ostringstream log;
   const auto         r = run_case(p, log);
   std::cout << log.str();
   EXPECT_NE(r.stop_reason.find("a crack formed inside the body"), std::string::npos) << r.stop_reason;
-  EXPECT_TRUE(r.path.empty());
+  ASSERT_FALSE(r.steps.empty());
+  EXPECT_LT(r.steps.back().displacement, p.full_pd.max_displacement);
   ASSERT_TRUE(r.interior_crack);
   const double radius = 0.05;
   EXPECT_LT(geometry::norm(*r.interior_crack), radius - p.pd.horizon);
-  EXPECT_LT(std::abs(r.interior_crack->x), 0.25 * radius) << "the tension lies along the loaded diameter";
-  ASSERT_FALSE(r.steps.empty());
-  EXPECT_LT(r.steps.back().displacement, p.full_pd.max_displacement);
+  EXPECT_LT(std::abs(r.interior_crack->x), 0.25 * radius) << "the tension lies across the loaded diameter";
+  ASSERT_GE(r.path.size(), 2u);
+  double from_centre = radius;
+  for (std::size_t k = 0; k + 1 < r.path.size(); ++k)
+    from_centre = std::min(from_centre, geometry::distance_to_segment({0., 0.}, r.path[k], r.path[k + 1]));
+  test::metric("fullpd.disc.crack_from_centre_over_delta", from_centre / p.pd.horizon);
+  test::metric("fullpd.disc.crack_length_mm", 1e3 * geometry::length(r.path));
+  EXPECT_LT(from_centre, p.pd.horizon);
+  EXPECT_GT(geometry::length(r.path), 4. * p.pd.horizon);
 }
 
 // The L-panel's first, elastic state against the global problem: full PD of the whole panel at
