@@ -64,4 +64,12 @@ namespace pumpd::conditions
     std::vector<Traction>     tractions;
     std::vector<PointForce>   forces;
   };
+
+  /// True if some of the place lies in the closed box: a boundary's face meets it, a point's
+  /// vertex lies in it, a region's bounding box overlaps it.
+  bool reaches_into(const Place &place, const geometry::Box &box);
+
+  /// The names of the places of every condition that reach into `box`, in the order displacements,
+  /// tractions, point forces.
+  std::vector<std::string> places_in(const Conditions &conditions, const geometry::Box &box);
 } // namespace pumpd::conditions

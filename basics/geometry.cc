@@ -14,6 +14,12 @@ namespace pumpd::geometry
     return "(" + pumpd::to_text(p.x, precision) + ", " + pumpd::to_text(p.y, precision) + ")";
   }
 
+  std::string to_text(const Box &box)
+  {
+    return "[" + pumpd::to_text(box.x_min) + ", " + pumpd::to_text(box.x_max) + "] x [" + pumpd::to_text(box.y_min) +
+           ", " + pumpd::to_text(box.y_max) + "]";
+  }
+
   std::string to_text(const Polyline &line)
   {
     std::string s;

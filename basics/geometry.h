@@ -46,6 +46,9 @@ namespace pumpd::geometry
     bool   contains(const Box &other, double tolerance = 0.) const;
   };
 
+  /// "[x_min, x_max] x [y_min, y_max]" for a message.
+  std::string to_text(const Box &box);
+
   /// The point of the segment [a, b] nearest p (a for a segment of zero length).
   Point nearest_on_segment(Point p, Point a, Point b);
 

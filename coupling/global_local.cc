@@ -177,8 +177,9 @@ namespace pumpd::coupling
       /// lambda_c); a tip whose ligament no box resolves is alone.
       std::vector<std::vector<std::size_t>> share_boxes(const std::vector<TipExchange> &parts) const;
       /// The box around its tips and the PD body in it (the whole crack as broken bonds), at the
-      /// finest horizon its tips' resolution asks for.
-      void pd_body(const std::vector<std::size_t> &box, std::vector<TipExchange> &parts);
+      /// finest horizon its tips' resolution asks for; "" or why the run stops (the box takes in a
+      /// place where the scene prescribes a condition).
+      std::string pd_body(const std::vector<std::size_t> &box, std::vector<TipExchange> &parts);
       /// The track whose box policy and controller a box uses: the lowest of its tips', so that
       /// a shared box keeps one history while the tip with the smallest lambda_c may change.
       std::size_t owner(const std::vector<std::size_t> &box, const std::vector<TipExchange> &parts) const
@@ -358,11 +359,16 @@ namespace pumpd::coupling
           for (const auto &box : share_boxes(parts))
             if (ligament_unresolved(parts[box.front()].tip))
               grow_by_lefm(parts[box.front()]);
+            else if (stop = pd_body(box, parts); stop.empty())
+              exchange(transfer_to(parts[box.front()]), box, parts);
             else
-              {
-                pd_body(box, parts);
-                exchange(transfer_to(parts[box.front()]), box, parts);
-              }
+              break;
+          if (!stop.empty())
+            {
+              result.stop_reason = stop;
+              out << "  stop: " << stop << "\n";
+              break;
+            }
           stop = grow(parts);
           write(n, parts, stop);
           if (!stop.empty())
@@ -521,7 +527,7 @@ namespace pumpd::coupling
       return boxes;
     }
 
-    void Cycle::pd_body(const std::vector<std::size_t> &box, std::vector<TipExchange> &parts)
+    std::string Cycle::pd_body(const std::vector<std::size_t> &box, std::vector<TipExchange> &parts)
     {
       const auto   t    = Clock::now();
       TipExchange &lead = parts[box.front()];
@@ -544,6 +550,16 @@ namespace pumpd::coupling
         }
       auto &track     = tracks[owner(box, parts)];
       lead.record.box = track.boxes.place(tips, directions, turns, track.length_scale());
+      if (const auto names = conditions_in_pd_box(scene, lead.record.box, track.pd.horizon); !names.empty())
+        {
+          std::string places;
+          for (const auto &name : names)
+            places += (places.empty() ? "" : ", ") + name;
+          return "the PD box " + geometry::to_text(lead.record.box) + " of the tip at " + to_text(lead.tip.position) +
+                 " takes in " + places +
+                 ", where the scene prescribes a condition the box would leave free (it holds only its boundary "
+                 "layer to the global displacement): a smaller Box size keeps it clear";
+        }
       lead.model.emplace(material, track.pd.horizon, track.pd.horizon_over_spacing,
                          local::Region{scene.body, lead.record.box, polylines()});
       for (std::size_t m : box)
@@ -554,6 +570,7 @@ namespace pumpd::coupling
       lead.record.seconds_point_evaluation = seconds_since(t);
       box_area_sum += lead.record.box.width() * lead.record.box.height();
       ++boxes_placed;
+      return "";
     }
 
     BoundaryTransfer Cycle::transfer_to(TipExchange &lead)

@@ -202,6 +202,19 @@ namespace pumpd::coupling
     NucleatedCrack crack;
     crack.site = site;
     crack.box  = boxes.place(centre, t);
+    if (const auto names = conditions_in_pd_box(scene, crack.box, pd.horizon); !names.empty())
+      {
+        std::string places;
+        for (const auto &name : names)
+          places += (places.empty() ? "" : ", ") + name;
+        crack.refusal = InvalidParameter("Box size", pumpd::to_text(box.size),
+                                         "the PD box of " + site_name(number) + " " + geometry::to_text(site.position) +
+                                           " takes in " + places +
+                                           ", where the scene prescribes a condition the box would leave free (it "
+                                           "holds only its boundary layer to the global displacement): use a "
+                                           "smaller Box size");
+        return crack;
+      }
     const geometry::Polyline flaw = mouth ? geometry::Polyline{*mouth, *mouth + h * t}
                                           : geometry::Polyline{centre - 0.5 * h * t, centre + 0.5 * h * t};
     const local::Region    region{scene.body, crack.box, {flaw}};

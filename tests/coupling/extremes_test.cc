@@ -306,6 +306,24 @@ TEST(CouplingExtremes, CrackReachesTheOutline)
   }));
 }
 
+// 5c'. A crack under the load point (tip 18 mm below it, beam without holes): once the box around
+// the tip, clipped to the top edge, takes in the load point, the run stops and says so; the PD
+// box would leave the point force out (it holds only its boundary layer to the global field).
+TEST(CouplingExtremes, BoxThatWouldTakeInTheLoadPointStopsTheRun)
+{
+  auto p                 = coarse("", false);
+  p.scene.initial_cracks = "0.254,0; 0.254,0.185";
+  p.cycle.max_exchanges  = 20;
+  const auto r           = run(p);
+  expect_finite(r);
+  EXPECT_TRUE(contains(r.stop_reason, "takes in load, where the scene prescribes a condition")) << r.stop_reason;
+  ASSERT_FALSE(r.boxes.empty());
+  const geometry::Point load{0.254, 0.2032};
+  EXPECT_FALSE(std::any_of(r.boxes.begin(), r.boxes.end() - 1, [&](const geometry::Box &b) { return b.contains(load); }))
+    << "a box took the load point in before the stop";
+  EXPECT_GT(r.path.back().y, 0.185);
+}
+
 // 5d. Maximum load factor 0.95: the PD box does not crack below P_c, so the first exchange
 // stops with "the load is too small to grow the crack", the crack unchanged, the state saved.
 TEST(CouplingExtremes, LoadTooSmallToGrowTheCrack)
