@@ -5,7 +5,7 @@
 //               from a mesh's boundary edges; containment, clearance, bond and ray tests
 //   error.h     InvalidParameter (names the parameter and its allowed range), NonFiniteState
 //   conditions.h  a scene's boundary conditions on named places of the mesh, per unit load factor;
-//               which places reach into a box
+//               whether a place lies near a point
 //   lefm.h      Williams near-tip fields (PD driving data, interaction integral, exact solutions)
 //   csv.h       the CSV writer (flushed row by row) and reader
 //   pvd.h       the ParaView series index (.pvd)

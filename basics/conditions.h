@@ -65,11 +65,7 @@ namespace pumpd::conditions
     std::vector<PointForce>   forces;
   };
 
-  /// True if some of the place lies in the closed box: a boundary's face meets it, a point's
-  /// vertex lies in it, a region's bounding box overlaps it.
-  bool reaches_into(const Place &place, const geometry::Box &box);
-
-  /// The names of the places of every condition that reach into `box`, in the order displacements,
-  /// tractions, point forces.
-  std::vector<std::string> places_in(const Conditions &conditions, const geometry::Box &box);
+  /// True if the place lies within `radius` of x: a boundary's face or a point's vertex within
+  /// that distance, or x in a region's cells.
+  bool near(const Place &place, geometry::Point x, double radius);
 } // namespace pumpd::conditions

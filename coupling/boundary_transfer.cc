@@ -2,6 +2,27 @@
 
 namespace pumpd::coupling
 {
+  std::vector<std::string> conditions_left_free(const conditions::Conditions &conditions, const local::PdModel &model)
+  {
+    const double             h = model.lattice().spacing();
+    std::vector<std::string> names;
+    const auto               check = [&](const conditions::Place &place) {
+      for (std::size_t i : model.nodes())
+        if (model.free_mask()[i] > 0. && conditions::near(place, model.lattice().position(i), h))
+          {
+            names.push_back(place.name);
+            return;
+          }
+    };
+    for (const auto &c : conditions.displacements)
+      check(c.place);
+    for (const auto &c : conditions.tractions)
+      check(c.place);
+    for (const auto &c : conditions.forces)
+      check(c.place);
+    return names;
+  }
+
   BoundaryTransfer::BoundaryTransfer(GlobalProblem &global, const local::PdModel &m)
     : model(m)
     , ux(m.lattice().storage_size(), 0.)

@@ -4,14 +4,22 @@
 // factor to the box's boundary layer, and to the whole box as the start of its first PD state.
 #pragma once
 
+#include <string>
 #include <vector>
 
 #include "boundary_layer.h"
+#include "conditions.h"
 #include "global_problem.h"
 #include "model.h"
 
 namespace pumpd::coupling
 {
+  /// The names of the places of `conditions` that the PD body `model` leaves free: a free node
+  /// (neither in the boundary layer nor prescribed) lies within a lattice spacing of the place. The
+  /// body holds only its layer to the global displacement; a load point, support, grip or loaded
+  /// edge among its free nodes would not carry its condition.
+  std::vector<std::string> conditions_left_free(const conditions::Conditions &conditions, const local::PdModel &model);
+
   class BoundaryTransfer
   {
   public:

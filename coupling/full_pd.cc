@@ -729,9 +729,10 @@ namespace pumpd::coupling
           }
         if (stop.empty())
           stop = no_fail_arrival(paths(result.path));
-        // A crack that forms inside the body has no mouth to trace it from.
+        // A crack a horizon long or more that forms inside the body has no mouth to grow it from.
         if (stop.empty() && initial.empty() && !seed)
-          if (const auto inside = interior_crack(model, field, seedable, extraction))
+          if (const auto inside = interior_crack(model, field, seedable, extraction);
+              inside && geometry::length(inside->path) >= pd.horizon)
             {
               result.interior_crack = inside->site;
               result.path           = inside->path;

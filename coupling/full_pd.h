@@ -29,7 +29,8 @@
 // A crack that forms inside the body instead (damage at the threshold a horizon or more from the
 // boundary while no node near it qualifies as a mouth) is traced both ways from its most damaged
 // node (`interior_crack`), along the principal axis of the damage around it, each way until its
-// ridge ends or splits; full PD does not grow it on: the run stops in the state it formed in.
+// ridge ends or splits; once that trace is a horizon long, the run stops in that state (full PD
+// does not grow it on).
 // Its steps are taken in d until it forms (the mouth is not known before), then, under crack-mouth
 // control (below), in the opening of the mouth where it formed, if the gauges across that mouth
 // opened over the step in which it formed (else in d to the end). The run stops where every tip

@@ -177,8 +177,8 @@ namespace pumpd::coupling
       /// lambda_c); a tip whose ligament no box resolves is alone.
       std::vector<std::vector<std::size_t>> share_boxes(const std::vector<TipExchange> &parts) const;
       /// The box around its tips and the PD body in it (the whole crack as broken bonds), at the
-      /// finest horizon its tips' resolution asks for; "" or why the run stops (the box takes in a
-      /// place where the scene prescribes a condition).
+      /// finest horizon its tips' resolution asks for; "" or why the run stops (a place where the
+      /// scene prescribes a condition lies among the box's free nodes).
       std::string pd_body(const std::vector<std::size_t> &box, std::vector<TipExchange> &parts);
       /// The track whose box policy and controller a box uses: the lowest of its tips', so that
       /// a shared box keeps one history while the tip with the smallest lambda_c may change.
@@ -356,19 +356,21 @@ namespace pumpd::coupling
             }
           for (auto &part : parts)
             resolve(part);
-          for (const auto &box : share_boxes(parts))
-            if (ligament_unresolved(parts[box.front()].tip))
-              grow_by_lefm(parts[box.front()]);
-            else if (stop = pd_body(box, parts); stop.empty())
-              exchange(transfer_to(parts[box.front()]), box, parts);
-            else
-              break;
+          const auto boxes = share_boxes(parts);
+          for (const auto &box : boxes)
+            if (stop.empty() && !ligament_unresolved(parts[box.front()].tip))
+              stop = pd_body(box, parts);
           if (!stop.empty())
             {
               result.stop_reason = stop;
               out << "  stop: " << stop << "\n";
               break;
             }
+          for (const auto &box : boxes)
+            if (ligament_unresolved(parts[box.front()].tip))
+              grow_by_lefm(parts[box.front()]);
+            else
+              exchange(transfer_to(parts[box.front()]), box, parts);
           stop = grow(parts);
           write(n, parts, stop);
           if (!stop.empty())
@@ -550,18 +552,18 @@ namespace pumpd::coupling
         }
       auto &track     = tracks[owner(box, parts)];
       lead.record.box = track.boxes.place(tips, directions, turns, track.length_scale());
-      if (const auto names = conditions_in_pd_box(scene, lead.record.box, track.pd.horizon); !names.empty())
+      lead.model.emplace(material, track.pd.horizon, track.pd.horizon_over_spacing,
+                         local::Region{scene.body, lead.record.box, polylines()});
+      if (const auto names = conditions_left_free(scene.conditions, *lead.model); !names.empty())
         {
           std::string places;
           for (const auto &name : names)
             places += (places.empty() ? "" : ", ") + name;
           return "the PD box " + geometry::to_text(lead.record.box) + " of the tip at " + to_text(lead.tip.position) +
-                 " takes in " + places +
-                 ", where the scene prescribes a condition the box would leave free (it holds only its boundary "
-                 "layer to the global displacement): a smaller Box size keeps it clear";
+                 " reaches " + places +
+                 ", where the scene prescribes a condition that its free nodes would not carry (the box holds only "
+                 "its boundary layer to the global displacement): the crack has come within a box of that place";
         }
-      lead.model.emplace(material, track.pd.horizon, track.pd.horizon_over_spacing,
-                         local::Region{scene.body, lead.record.box, polylines()});
       for (std::size_t m : box)
         {
           parts[m].record.box      = lead.record.box;

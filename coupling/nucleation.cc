@@ -202,19 +202,6 @@ namespace pumpd::coupling
     NucleatedCrack crack;
     crack.site = site;
     crack.box  = boxes.place(centre, t);
-    if (const auto names = conditions_in_pd_box(scene, crack.box, pd.horizon); !names.empty())
-      {
-        std::string places;
-        for (const auto &name : names)
-          places += (places.empty() ? "" : ", ") + name;
-        crack.refusal = InvalidParameter("Box size", pumpd::to_text(box.size),
-                                         "the PD box of " + site_name(number) + " " + geometry::to_text(site.position) +
-                                           " takes in " + places +
-                                           ", where the scene prescribes a condition the box would leave free (it "
-                                           "holds only its boundary layer to the global displacement): use a "
-                                           "smaller Box size");
-        return crack;
-      }
     const geometry::Polyline flaw = mouth ? geometry::Polyline{*mouth, *mouth + h * t}
                                           : geometry::Polyline{centre - 0.5 * h * t, centre + 0.5 * h * t};
     const local::Region    region{scene.body, crack.box, {flaw}};
@@ -223,6 +210,20 @@ namespace pumpd::coupling
     const local::PdModel   model(material, pd.horizon, pd.horizon_over_spacing, region,
                                  layer_no_fail_zones(local::PdModel(material, pd.horizon, pd.horizon_over_spacing, region),
                                                      pd.horizon, band));
+    if (const auto names = conditions_left_free(scene.conditions, model); !names.empty())
+      {
+        std::string places;
+        for (const auto &name : names)
+          places += (places.empty() ? "" : ", ") + name;
+        crack.refusal = InvalidParameter(
+          "Box size", pumpd::to_text(settings.cycle.box.size),
+          "the PD box " + geometry::to_text(crack.box) + " of " + site_name(number) + " " +
+            geometry::to_text(site.position) + " (its side at least Box size and 2 (3 Horizon + Maximum advance)) reaches " +
+            places +
+            ", where the scene prescribes a condition that its free nodes would not carry (the box holds only its "
+            "boundary layer to the global displacement): a smaller side keeps it clear");
+        return crack;
+      }
     const BoundaryTransfer transfer(global, model);
     crack.pd_nodes = model.nodes().size();
 

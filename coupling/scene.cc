@@ -765,22 +765,6 @@ namespace pumpd::coupling
     return fnv1a(bytes);
   }
 
-  std::vector<std::string> conditions_in_pd_box(const Scene &scene, const geometry::Box &box, double horizon)
-  {
-    const auto   &extent = scene.body.bounding_box();
-    const double  on     = 1e-9 * std::max(extent.width(), extent.height());
-    geometry::Box beyond_layer = box;
-    if (box.x_min > extent.x_min + on)
-      beyond_layer.x_min += horizon;
-    if (box.x_max < extent.x_max - on)
-      beyond_layer.x_max -= horizon;
-    if (box.y_min > extent.y_min + on)
-      beyond_layer.y_min += horizon;
-    if (box.y_max < extent.y_max - on)
-      beyond_layer.y_max -= horizon;
-    return conditions::places_in(scene.conditions, beyond_layer);
-  }
-
   geometry::Polyline read_path(const std::string &file)
   {
     std::ifstream in(file);

@@ -105,12 +105,6 @@ namespace pumpd::coupling
   /// allowed for every check in the header comment.
   Scene build_scene(const SceneSettings &settings);
 
-  /// The places of the scene's conditions that reach into the PD box `box` beyond its boundary
-  /// layer (the box less a horizon on each side that does not lie on the body's bounding box). The
-  /// PD model holds only the layer to the global displacement and leaves every other boundary free,
-  /// so a box that takes in a loaded or held place would not carry its condition.
-  std::vector<std::string> conditions_in_pd_box(const Scene &scene, const geometry::Box &box, double horizon);
-
   /// A hash (FNV-1a) of what makes the scene's geometry: the mesh's vertices and cells and the
   /// initial cracks. A cycle checkpoint keeps it, so that a run resumes only the scene that wrote
   /// it.

@@ -379,6 +379,7 @@ TEST(CrackExtraction, RefusesABranchingRidge)
               << " (fork " << geometry::to_text(fork) << ")\n";
     EXPECT_EQ(stem.stop_reason.rfind(ridge_splits, 0), 0u) << stem.stop_reason;
     EXPECT_LT(distance_to(stem.path.back(), {s.tip, fork + 2. * m * h * d}), 0.5 * h);
+    EXPECT_GT(geometry::dot(stem.path.back() - fork, d), 0.);
     EXPECT_LT(geometry::norm(stem.path.back() - fork), m * h + 2. * h);
     EXPECT_GT(stem.length(), h);
   }

@@ -307,8 +307,9 @@ TEST(CouplingExtremes, CrackReachesTheOutline)
 }
 
 // 5c'. A crack under the load point (tip 18 mm below it, beam without holes): once the box around
-// the tip, clipped to the top edge, takes in the load point, the run stops and says so; the PD
-// box would leave the point force out (it holds only its boundary layer to the global field).
+// the tip, clipped to the top edge, holds the load point among its free nodes, the run stops and
+// says so; the box would leave the point force out (it holds only its boundary layer to the
+// global field). No box before it held the point.
 TEST(CouplingExtremes, BoxThatWouldTakeInTheLoadPointStopsTheRun)
 {
   auto p                 = coarse("", false);
@@ -316,11 +317,12 @@ TEST(CouplingExtremes, BoxThatWouldTakeInTheLoadPointStopsTheRun)
   p.cycle.max_exchanges  = 20;
   const auto r           = run(p);
   expect_finite(r);
-  EXPECT_TRUE(contains(r.stop_reason, "takes in load, where the scene prescribes a condition")) << r.stop_reason;
+  EXPECT_TRUE(contains(r.stop_reason, "reaches load, where the scene prescribes a condition")) << r.stop_reason;
   ASSERT_FALSE(r.boxes.empty());
   const geometry::Point load{0.254, 0.2032};
+  EXPECT_TRUE(r.boxes.back().contains(load)) << geometry::to_text(r.boxes.back());
   EXPECT_FALSE(std::any_of(r.boxes.begin(), r.boxes.end() - 1, [&](const geometry::Box &b) { return b.contains(load); }))
-    << "a box took the load point in before the stop";
+    << "a box held the load point before the stop";
   EXPECT_GT(r.path.back().y, 0.185);
 }
 
