@@ -41,6 +41,15 @@ namespace
     return p;
   }
 
+  /// The beam without holes with a deep crack at x, its tip 18 mm below the top edge.
+  coupling::Parameters deep_crack(const std::string &name, double x)
+  {
+    auto p                 = coarse(name, false);
+    p.scene.initial_cracks = geometry::to_text(geometry::Polyline{{x, 0.}, {x, 0.185}});
+    p.cycle.max_exchanges  = 20;
+    return p;
+  }
+
   bool contains(const std::string &text, const std::string &part) { return text.find(part) != std::string::npos; }
 
   /// The value of `pumpd-metric <name> <value>` in a log; NaN if absent.
@@ -292,10 +301,7 @@ TEST(CouplingExtremes, BoxOnTheBodyOutline)
 // the last ligament, narrower than 3 of their horizons, breaks by LEFM.
 TEST(CouplingExtremes, CrackReachesTheOutline)
 {
-  auto p                 = coarse("outline_reach", false);
-  p.scene.initial_cracks = "0.2,0; 0.2,0.185";
-  p.cycle.max_exchanges  = 20;
-  const auto r    = run(p);
+  const auto r = run(deep_crack("outline_reach", 0.2));
   expect_finite(r);
   EXPECT_TRUE(contains(r.stop_reason, "reached the outline")) << r.stop_reason;
   EXPECT_NEAR(r.path.back().y, 0.2032, 1e-9);
@@ -312,10 +318,7 @@ TEST(CouplingExtremes, CrackReachesTheOutline)
 // global field). No box before it held the point.
 TEST(CouplingExtremes, BoxThatWouldTakeInTheLoadPointStopsTheRun)
 {
-  auto p                 = coarse("", false);
-  p.scene.initial_cracks = "0.254,0; 0.254,0.185";
-  p.cycle.max_exchanges  = 20;
-  const auto r           = run(p);
+  const auto r = run(deep_crack("", 0.254));
   expect_finite(r);
   EXPECT_TRUE(contains(r.stop_reason, "reaches load, where the scene prescribes a condition")) << r.stop_reason;
   ASSERT_FALSE(r.boxes.empty());
