@@ -2,15 +2,15 @@
 
 namespace pumpd::coupling
 {
-  std::vector<std::string> conditions_left_free(const conditions::Conditions &conditions, const local::PdModel &model)
+  std::string conditions_left_free(const conditions::Conditions &conditions, const local::PdModel &model)
   {
     const double             h = model.lattice().spacing();
-    std::vector<std::string> names;
+    std::string              names;
     const auto               check = [&](const conditions::Place &place) {
       for (std::size_t i : model.nodes())
         if (model.free_mask()[i] > 0. && conditions::near(place, model.lattice().position(i), h))
           {
-            names.push_back(place.name);
+            names += (names.empty() ? "" : ", ") + place.name;
             return;
           }
     };

@@ -14,11 +14,11 @@
 
 namespace pumpd::coupling
 {
-  /// The names of the places of `conditions` that the PD body `model` leaves free: a free node
-  /// (neither in the boundary layer nor prescribed) lies within a lattice spacing of the place. The
-  /// body holds only its layer to the global displacement; a load point, support, grip or loaded
-  /// edge among its free nodes would not carry its condition.
-  std::vector<std::string> conditions_left_free(const conditions::Conditions &conditions, const local::PdModel &model);
+  /// The names, comma-separated ("" if none), of the places of `conditions` that the PD body
+  /// `model` leaves free: a free node (neither in the boundary layer nor prescribed) lies within a
+  /// lattice spacing of the place. The body holds only its layer to the global displacement; a
+  /// load point, support, grip or loaded edge among its free nodes would not carry its condition.
+  std::string conditions_left_free(const conditions::Conditions &conditions, const local::PdModel &model);
 
   class BoundaryTransfer
   {

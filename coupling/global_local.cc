@@ -554,16 +554,11 @@ namespace pumpd::coupling
       lead.record.box = track.boxes.place(tips, directions, turns, track.length_scale());
       lead.model.emplace(material, track.pd.horizon, track.pd.horizon_over_spacing,
                          local::Region{scene.body, lead.record.box, polylines()});
-      if (const auto names = conditions_left_free(scene.conditions, *lead.model); !names.empty())
-        {
-          std::string places;
-          for (const auto &name : names)
-            places += (places.empty() ? "" : ", ") + name;
-          return "the PD box " + geometry::to_text(lead.record.box) + " of the tip at " + to_text(lead.tip.position) +
-                 " reaches " + places +
-                 ", where the scene prescribes a condition that its free nodes would not carry (the box holds only "
-                 "its boundary layer to the global displacement): the crack has come within a box of that place";
-        }
+      if (const auto places = conditions_left_free(scene.conditions, *lead.model); !places.empty())
+        return "the PD box " + geometry::to_text(lead.record.box) + " of the tip at " + to_text(lead.tip.position) +
+               " reaches " + places +
+               ", where the scene prescribes a condition that its free nodes would not carry (the box holds only "
+               "its boundary layer to the global displacement): the crack has come within a box of that place";
       for (std::size_t m : box)
         {
           parts[m].record.box      = lead.record.box;

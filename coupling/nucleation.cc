@@ -210,11 +210,8 @@ namespace pumpd::coupling
     const local::PdModel   model(material, pd.horizon, pd.horizon_over_spacing, region,
                                  layer_no_fail_zones(local::PdModel(material, pd.horizon, pd.horizon_over_spacing, region),
                                                      pd.horizon, band));
-    if (const auto names = conditions_left_free(scene.conditions, model); !names.empty())
+    if (const auto places = conditions_left_free(scene.conditions, model); !places.empty())
       {
-        std::string places;
-        for (const auto &name : names)
-          places += (places.empty() ? "" : ", ") + name;
         crack.refusal = InvalidParameter(
           "Box size", pumpd::to_text(settings.cycle.box.size),
           "the PD box " + geometry::to_text(crack.box) + " of " + site_name(number) + " " +
