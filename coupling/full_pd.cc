@@ -458,9 +458,12 @@ namespace pumpd::coupling
     CsvFile  table = recorder.table("load_steps.csv", "step,control_displacement_m,crack_mouth_opening_m,lambda,load,"
                                                      "displacement,crack_length_m,tip_x_m,tip_y_m,dr_iterations,"
                                                      "dr_converged,repeats,seconds");
-    // Every crack as accepted (without an initial one, the crack the seed forms).
+    // The cracks are traced from their tips: the initial ones, or one that formed inside the
+    // body (interior_crack); else the crack is traced from its seed.
+    bool from_tips = !initial.empty();
+    // Every crack as accepted (without cracks traced from tips, the crack the seed forms).
     const auto paths = [&](const geometry::Polyline &seeded) {
-      return initial.empty() ? std::vector<geometry::Polyline>{seeded} : traces.paths();
+      return from_tips ? traces.paths() : std::vector<geometry::Polyline>{seeded};
     };
     recorder.crack_paths(paths(initial));
     std::size_t prescribed_nodes = 0;
@@ -475,8 +478,8 @@ namespace pumpd::coupling
         << " linear bonds); relaxation tolerance " << tolerance << "; K_c = " << model.material().critical_sif()
         << " Pa m^1/2" << std::endl;
     if (initial.empty())
-      out << "full PD: no initial crack: it is traced from where the damage first reaches the boundary, under "
-             "load-point control"
+      out << "full PD: no initial crack: it is traced from where the damage first reaches the boundary (or, where "
+             "a crack forms inside the body, from its two tips), under load-point control"
           << (by_mouth ? " until it forms, then under the opening of its mouth (if the gauges across it open)" : "")
           << std::endl;
 
@@ -654,9 +657,9 @@ namespace pumpd::coupling
                     field.values[k] = std::max(field.values[k], traced.values[k]);
                 // Without an initial crack the seed follows the damage until the crack is a
                 // horizon long.
-                if (initial.empty() && length < pd.horizon)
+                if (!from_tips && length < pd.horizon)
                   seed = seed_crack(model, field, seedable, pd.crack_damage, pd.horizon);
-                if (!initial.empty())
+                if (from_tips)
                   {
                     increments    = traces.extract(field, extraction, 0.5 * pd.horizon);
                     traced_length = traces.traced_length(increments);
@@ -712,7 +715,7 @@ namespace pumpd::coupling
         std::string stop;
         if (!branching.empty())
           stop = "crack branching, refused: " + branching;
-        else if (!initial.empty())
+        else if (from_tips)
           {
             stop        = traces.accept(increments, scene.body, settings.growth.hole_margin, pd.horizon);
             result.path = traces.paths().front();
@@ -729,20 +732,22 @@ namespace pumpd::coupling
           }
         if (stop.empty())
           stop = no_fail_arrival(paths(result.path));
-        // A crack a horizon long or more that forms inside the body has no mouth to grow it from.
-        if (stop.empty() && initial.empty() && !seed)
+        // A crack a horizon long or more that forms inside the body is traced on from its two tips,
+        // as an initial interior crack is.
+        if (stop.empty() && !from_tips && !seed)
           if (const auto inside = interior_crack(model, field, seedable, extraction);
               inside && geometry::length(inside->path) >= pd.horizon)
             {
+              traces                = CrackTraces({inside->path}, scene.body, on_boundary);
+              from_tips             = true;
               result.interior_crack = inside->site;
-              result.path           = inside->path;
+              result.path           = traces.paths().front();
               increment.stop_reason = inside->ends;
-              stop = "a crack formed inside the body at " + to_text(inside->site) + ", from " +
-                     to_text(inside->path.front()) + " to " + to_text(inside->path.back()) + " (" + inside->ends +
-                     "): full PD grows a crack from a mouth on the outline or a hole's rim, not one it forms "
-                     "inside the body (global-local nucleates and grows interior cracks)";
+              out << "  a crack formed inside the body at " << to_text(inside->site) << ", from "
+                  << to_text(inside->path.front()) << " to " << to_text(inside->path.back()) << " (" << inside->ends
+                  << "): from here on it is traced from its two tips" << std::endl;
             }
-        const double new_length = initial.empty() ? geometry::length(result.path) : traces.length();
+        const double new_length = from_tips ? traces.length() : geometry::length(result.path);
         if (initial.empty() && length == 0. && new_length > 0.)
           note_compression(s);
         growth                  = std::max(0., new_length - length);

@@ -29,11 +29,12 @@
 // A crack that forms inside the body instead (damage at the threshold a horizon or more from the
 // boundary while no node near it qualifies as a mouth) is traced both ways from its most damaged
 // node (`interior_crack`), along the principal axis of the damage around it, each way until its
-// ridge ends or splits; once that trace is a horizon long, the run stops in that state (full PD
-// does not grow it on).
+// ridge ends or splits; once that trace is a horizon long, the run traces it on from its two tips,
+// as it traces an initial interior crack.
 // Its steps are taken in d until it forms (the mouth is not known before), then, under crack-mouth
 // control (below), in the opening of the mouth where it formed, if the gauges across that mouth
-// opened over the step in which it formed (else in d to the end). The run stops where every tip
+// opened over the step in which it formed (else, and for a crack formed inside the body, in d to
+// the end). The run stops where every tip
 // has reached a hole (within the hole margin) or the outline, where a tip joins another crack or
 // comes within half a horizon of a no-fail zone, where the cracks stop growing for good, or where d
 // reaches its maximum. The crack advance of a step is
@@ -151,7 +152,8 @@ namespace pumpd::coupling
     geometry::Polyline              path;           ///< the first crack
     std::vector<geometry::Polyline> paths;          ///< every crack, in the scene's order
     bool                            joined = false; ///< a tip joined another crack
-    /// Without an initial crack: where one formed inside the body, with no mouth (the run stops).
+    /// Without an initial crack: where one formed inside the body, with no mouth (its most damaged
+    /// node; the crack is then traced on from its two tips).
     std::optional<geometry::Point> interior_crack;
     std::vector<FullPdStep>         steps;
     std::string                     stop_reason;
