@@ -34,10 +34,9 @@
 // Its steps are taken in d until it forms (the mouth is not known before), then, under crack-mouth
 // control (below), in the opening of the mouth where it formed, if the gauges across that mouth
 // opened over the step in which it formed (else, and for a crack formed inside the body, in d to
-// the end). The run stops where every tip
-// has reached a hole (within the hole margin) or the outline, where a tip joins another crack or
-// comes within half a horizon of a no-fail zone, where the cracks stop growing for good, or where d
-// reaches its maximum. The crack advance of a step is
+// the end). The run stops where every tip has reached a hole (within the hole margin) or the
+// outline, where a tip joins another crack or comes within half a horizon of a no-fail zone, where
+// the cracks stop growing for good, or where d reaches its maximum. The crack advance of a step is
 // that of every crack together.
 //
 // Displacement steps (the rule the method follows):
