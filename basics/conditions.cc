@@ -1,5 +1,7 @@
 #include "conditions.h"
 
+#include <algorithm>
+
 namespace pumpd::conditions
 {
   bool near(const Place &place, geometry::Point x, double radius)
@@ -22,5 +24,13 @@ namespace pumpd::conditions
           return place.inside && place.inside(x);
       }
     return false;
+  }
+
+  bool near_any(const Conditions &conditions, geometry::Point x, double radius)
+  {
+    const auto at = [&](const auto &list) {
+      return std::any_of(list.begin(), list.end(), [&](const auto &c) { return near(c.place, x, radius); });
+    };
+    return at(conditions.displacements) || at(conditions.tractions) || at(conditions.forces);
   }
 } // namespace pumpd::conditions

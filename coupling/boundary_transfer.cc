@@ -1,26 +1,31 @@
 #include "boundary_transfer.h"
 
+#include "pd_conditions.h"
+
 namespace pumpd::coupling
 {
-  std::string conditions_left_free(const conditions::Conditions &conditions, const local::PdModel &model)
+  std::vector<local::PrescribedRegion> held_places(const conditions::Conditions &conditions,
+                                                   const local::PdModel         &probe)
   {
-    const double             h = model.lattice().spacing();
-    std::string              names;
-    const auto               check = [&](const conditions::Place &place) {
-      for (std::size_t i : model.nodes())
-        if (model.free_mask()[i] > 0. && conditions::near(place, model.lattice().position(i), h))
+    const double                         h = probe.lattice().spacing(), horizon = probe.material().horizon();
+    std::vector<local::PrescribedRegion> held;
+    const auto                           hold = [&](const conditions::Place &place) {
+      for (std::size_t i : probe.nodes())
+        if (probe.free_mask()[i] > 0. && conditions::near(place, probe.lattice().position(i), h))
           {
-            names += (names.empty() ? "" : ", ") + place.name;
+            held.push_back(local::prescribed_region(place, true, true, horizon, horizon));
+            if (place.kind == conditions::Place::Kind::point)
+              held.back().elastic_margin = horizon;
             return;
           }
     };
     for (const auto &c : conditions.displacements)
-      check(c.place);
+      hold(c.place);
     for (const auto &c : conditions.tractions)
-      check(c.place);
+      hold(c.place);
     for (const auto &c : conditions.forces)
-      check(c.place);
-    return names;
+      hold(c.place);
+    return held;
   }
 
   BoundaryTransfer::BoundaryTransfer(GlobalProblem &global, const local::PdModel &m)
@@ -49,6 +54,21 @@ namespace pumpd::coupling
         y[k] = lambda * uy[nodes[k]];
       }
     layer.set_target(x, y);
+  }
+
+  void BoundaryTransfer::hold(double lambda, local::State &s) const
+  {
+    for (std::size_t r = 0; r < model.prescribed_regions().size(); ++r)
+      {
+        const auto &region = model.prescribed_regions()[r];
+        for (std::size_t i : model.prescribed_nodes(r))
+          {
+            if (region.fix_x)
+              s.ux[i] = lambda * ux[i];
+            if (region.fix_y)
+              s.uy[i] = lambda * uy[i];
+          }
+      }
   }
 
   void BoundaryTransfer::start(double lambda, local::State &s) const

@@ -119,6 +119,7 @@ namespace pumpd::coupling
         predict(model, before, state_lambda, lambda, s);
         transfer.apply(lambda * lambda_c, layer);
         layer.apply(s, 1.);
+        transfer.hold(lambda * lambda_c, s);
         const auto relaxed = relax.solve(s);
         local::check_finite(model, s);
         state_lambda = lambda;

@@ -176,10 +176,10 @@ namespace pumpd::coupling
       /// other, the one with the smallest lambda_c first (it leads: the box's load is in its
       /// lambda_c); a tip whose ligament no box resolves is alone.
       std::vector<std::vector<std::size_t>> share_boxes(const std::vector<TipExchange> &parts) const;
-      /// The box around its tips and the PD body in it (the whole crack as broken bonds), at the
-      /// finest horizon its tips' resolution asks for; "" or why the run stops (a place where the
-      /// scene prescribes a condition lies among the box's free nodes).
-      std::string pd_body(const std::vector<std::size_t> &box, std::vector<TipExchange> &parts);
+      /// The box around its tips and the PD body in it (the whole crack as broken bonds, the
+      /// places of the scene's conditions it takes in held to the global displacement), at the
+      /// finest horizon its tips' resolution asks for.
+      void pd_body(const std::vector<std::size_t> &box, std::vector<TipExchange> &parts);
       /// The track whose box policy and controller a box uses: the lowest of its tips', so that
       /// a shared box keeps one history while the tip with the smallest lambda_c may change.
       std::size_t owner(const std::vector<std::size_t> &box, const std::vector<TipExchange> &parts) const
@@ -202,7 +202,9 @@ namespace pumpd::coupling
       /// another crack's face (it joins it there): sets why the tip stops, if it does.
       void grow_tip(TipExchange &part);
       /// True if the ligament ahead of the tip (to the outline or a hole, along its direction) is
-      /// narrower than Clearance over horizon of the finest box: no PD box resolves it.
+      /// narrower than Clearance over horizon of the finest box, or the tip lies that close to a
+      /// place of the scene's conditions (its box would hold the place: held_places): no PD box
+      /// resolves it.
       bool ligament_unresolved(const TipState &tip) const;
       /// One LEFM increment of a box horizon along the maximum hoop stress direction at lambda_c
       /// (as lefm_growth.h), to the outline or the hole where the ligament ends.
@@ -358,14 +360,8 @@ namespace pumpd::coupling
             resolve(part);
           const auto boxes = share_boxes(parts);
           for (const auto &box : boxes)
-            if (stop.empty() && !ligament_unresolved(parts[box.front()].tip))
-              stop = pd_body(box, parts);
-          if (!stop.empty())
-            {
-              result.stop_reason = stop;
-              out << "  stop: " << stop << "\n";
-              break;
-            }
+            if (!ligament_unresolved(parts[box.front()].tip))
+              pd_body(box, parts);
           for (const auto &box : boxes)
             if (ligament_unresolved(parts[box.front()].tip))
               grow_by_lefm(parts[box.front()]);
@@ -529,7 +525,7 @@ namespace pumpd::coupling
       return boxes;
     }
 
-    std::string Cycle::pd_body(const std::vector<std::size_t> &box, std::vector<TipExchange> &parts)
+    void Cycle::pd_body(const std::vector<std::size_t> &box, std::vector<TipExchange> &parts)
     {
       const auto   t    = Clock::now();
       TipExchange &lead = parts[box.front()];
@@ -552,13 +548,10 @@ namespace pumpd::coupling
         }
       auto &track     = tracks[owner(box, parts)];
       lead.record.box = track.boxes.place(tips, directions, turns, track.length_scale());
-      lead.model.emplace(material, track.pd.horizon, track.pd.horizon_over_spacing,
-                         local::Region{scene.body, lead.record.box, polylines()});
-      if (const auto places = conditions_left_free(scene.conditions, *lead.model); !places.empty())
-        return "the PD box " + geometry::to_text(lead.record.box) + " of the tip at " + to_text(lead.tip.position) +
-               " reaches " + places +
-               ", where the scene prescribes a condition that its free nodes would not carry (the box holds only "
-               "its boundary layer to the global displacement): the crack has come within a box of that place";
+      const local::Region region{scene.body, lead.record.box, polylines()};
+      lead.model.emplace(material, track.pd.horizon, track.pd.horizon_over_spacing, region);
+      if (auto held = held_places(scene.conditions, *lead.model); !held.empty())
+        lead.model.emplace(material, track.pd.horizon, track.pd.horizon_over_spacing, region, held);
       for (std::size_t m : box)
         {
           parts[m].record.box      = lead.record.box;
@@ -567,7 +560,6 @@ namespace pumpd::coupling
       lead.record.seconds_point_evaluation = seconds_since(t);
       box_area_sum += lead.record.box.width() * lead.record.box.height();
       ++boxes_placed;
-      return "";
     }
 
     BoundaryTransfer Cycle::transfer_to(TipExchange &lead)
@@ -742,7 +734,8 @@ namespace pumpd::coupling
       const double finest   = std::ldexp(s.pd.horizon, r.rule == "clearance" ? -int(r.max_halvings) : 0);
       const double ligament = std::min(scene.body.ray_to_outline(tip.position, tip.direction),
                                        scene.body.ray_to_holes(tip.position, tip.direction, 0.).t);
-      return ligament < r.clearance_over_horizon * finest;
+      const double clearance = r.clearance_over_horizon * finest;
+      return ligament < clearance || conditions::near_any(scene.conditions, tip.position, clearance);
     }
 
     void Cycle::grow_by_lefm(TipExchange &part)

@@ -207,20 +207,11 @@ namespace pumpd::coupling
     const local::Region    region{scene.body, crack.box, {flaw}};
     const auto             material = pd.material(scene.material);
     const double           band     = in_the_open(scene.body, crack.box) ? 0. : layer_clearance * pd.horizon;
-    const local::PdModel   model(material, pd.horizon, pd.horizon_over_spacing, region,
-                                 layer_no_fail_zones(local::PdModel(material, pd.horizon, pd.horizon_over_spacing, region),
-                                                     pd.horizon, band));
-    if (const auto places = conditions_left_free(scene.conditions, model); !places.empty())
-      {
-        crack.refusal = InvalidParameter(
-          "Box size", pumpd::to_text(settings.cycle.box.size),
-          "the PD box " + geometry::to_text(crack.box) + " of " + site_name(number) + " " +
-            geometry::to_text(site.position) + " (its side at least Box size and 2 (3 Horizon + Maximum advance)) reaches " +
-            places +
-            ", where the scene prescribes a condition that its free nodes would not carry (the box holds only its "
-            "boundary layer to the global displacement): a smaller side keeps it clear");
-        return crack;
-      }
+    const local::PdModel   probe(material, pd.horizon, pd.horizon_over_spacing, region);
+    auto                   prescribed = layer_no_fail_zones(probe, pd.horizon, band);
+    for (auto &place : held_places(scene.conditions, probe))
+      prescribed.push_back(std::move(place));
+    const local::PdModel model(material, pd.horizon, pd.horizon_over_spacing, region, prescribed);
     const BoundaryTransfer transfer(global, model);
     crack.pd_nodes = model.nodes().size();
 

@@ -13,7 +13,8 @@
 //  3. The PD box: BoxPolicy's box centred at the mouth or the centre (clipped to the body, grown
 //     to take in a nearby hole), a side of at least 2 (3 delta + Maximum advance) so that the
 //     longest crack stays clear of the layer's no-fail band below. The boundary transfer maps the
-//     uncracked global displacement per unit load factor onto its boundary layer. The bonds within
+//     uncracked global displacement per unit load factor onto its boundary layer and onto the
+//     places of the scene's conditions it takes in (held_places, boundary_transfer.h). The bonds within
 //     two horizons of the layer stay linear elastic (a no-fail zone, as at full PD's pads): where
 //     the layer, held to the elastic field, meets a free surface of the softer PD body (its surface
 //     nodes lack bonds), the strain concentrates, and in a box whose stress hardly varies, such as
