@@ -9,7 +9,7 @@ namespace pumpd::coupling
   {
     const double                         h = probe.lattice().spacing(), horizon = probe.material().horizon();
     std::vector<local::PrescribedRegion> held;
-    const auto                           hold = [&](const conditions::Place &place) {
+    const auto                           take_in = [&](const conditions::Place &place) {
       for (std::size_t i : probe.nodes())
         if (probe.free_mask()[i] > 0. && conditions::near(place, probe.lattice().position(i), h))
           {
@@ -20,11 +20,11 @@ namespace pumpd::coupling
           }
     };
     for (const auto &c : conditions.displacements)
-      hold(c.place);
+      take_in(c.place);
     for (const auto &c : conditions.tractions)
-      hold(c.place);
+      take_in(c.place);
     for (const auto &c : conditions.forces)
-      hold(c.place);
+      take_in(c.place);
     return held;
   }
 

@@ -99,7 +99,7 @@ namespace pumpd::coupling
     geometry::Polyline              path;  ///< the first crack
     std::vector<geometry::Polyline> paths; ///< every crack, in the scene's order
     std::vector<ExchangeRecord> exchanges;
-    std::vector<geometry::Box>  boxes; ///< every box placed, per track; a box that stopped the run is the last of its track's
+    std::vector<geometry::Box>  boxes; ///< every box placed, per track
     std::string                 stop_reason;
     double                      seconds       = 0.;
     double                      pd_node_steps = 0.; ///< sum of PD nodes x DR iterations
