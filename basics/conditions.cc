@@ -26,11 +26,21 @@ namespace pumpd::conditions
     return false;
   }
 
+  std::vector<const Place *> places(const Conditions &conditions)
+  {
+    std::vector<const Place *> all;
+    for (const auto &c : conditions.displacements)
+      all.push_back(&c.place);
+    for (const auto &c : conditions.tractions)
+      all.push_back(&c.place);
+    for (const auto &c : conditions.forces)
+      all.push_back(&c.place);
+    return all;
+  }
+
   bool near_any(const Conditions &conditions, geometry::Point x, double radius)
   {
-    const auto at = [&](const auto &list) {
-      return std::any_of(list.begin(), list.end(), [&](const auto &c) { return near(c.place, x, radius); });
-    };
-    return at(conditions.displacements) || at(conditions.tractions) || at(conditions.forces);
+    const auto all = places(conditions);
+    return std::any_of(all.begin(), all.end(), [&](const Place *place) { return near(*place, x, radius); });
   }
 } // namespace pumpd::conditions

@@ -68,6 +68,8 @@ namespace pumpd::conditions
   /// True if the place lies within `radius` of x: a boundary's face or a point's vertex within
   /// that distance, or x in a region's cells.
   bool near(const Place &place, geometry::Point x, double radius);
+  /// The place of every condition: the displacements', then the tractions', then the point forces'.
+  std::vector<const Place *> places(const Conditions &conditions);
   /// True if x lies within radius of the place of any of the conditions.
   bool near_any(const Conditions &conditions, geometry::Point x, double radius);
 } // namespace pumpd::conditions

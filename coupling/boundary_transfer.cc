@@ -19,12 +19,8 @@ namespace pumpd::coupling
             return;
           }
     };
-    for (const auto &c : conditions.displacements)
-      take_in(c.place);
-    for (const auto &c : conditions.tractions)
-      take_in(c.place);
-    for (const auto &c : conditions.forces)
-      take_in(c.place);
+    for (const conditions::Place *place : conditions::places(conditions))
+      take_in(*place);
     return held;
   }
 
