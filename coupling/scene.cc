@@ -368,9 +368,11 @@ namespace pumpd::coupling
     /// as many on each part a crack cuts a face into); full PD takes a displacement at lattice
     /// nodes anywhere in a region's cells, in a band along a boundary's faces, in a disk about a
     /// point's vertex. No finite set holds all of these; this one holds the vertices, each face's
-    /// midpoint and 8 Gauss points, and with `pd_nodes` 13 points of each cell PD nodes can lie in
-    /// (a region's cells always; with `pd_nodes` the cells along a boundary or about a point): a
-    /// term that vanishes at every vertex, as one periodic in the cell size does, shows there.
+    /// midpoint and 8 Gauss points, and the centre, the edge midpoints and 2 x 2 Gauss points of
+    /// each cell PD nodes can lie in (a region's cells; with `pd_nodes` the cells along a boundary
+    /// or about a point): a term that vanishes at every vertex, as one periodic in the cell size
+    /// does, shows there (one of period h/2 vanishes at the midpoints and centres too, not at the
+    /// Gauss points).
     std::vector<CheckedPoint> checked_points(const conditions::Place &place, const dealii::Triangulation<2> &tria,
                                              bool pd_nodes)
     {
@@ -378,19 +380,26 @@ namespace pumpd::coupling
       std::vector<CheckedPoint> points;
       for (const Point x : place.points)
         points.push_back({x, "a vertex"});
+      const auto to_point = [](const dealii::Point<2> &p) { return Point{p[0], p[1]}; };
       const dealii::QGauss<1> face_rule(8);
-      const dealii::QGauss<2> cell_rule(3);
+      const dealii::QGauss<2> cell_rule(2);
+      std::vector<bool>       edge_taken(tria.n_raw_faces(), false); // an edge two cells share, once
       const auto              add_cell = [&](const auto &cell) {
+        points.push_back({to_point(cell->center()), "the centre of a cell"});
         for (const auto &q : cell_rule.get_points())
-          points.push_back({in_cell(cell, q[0], q[1]), "a point inside a cell"});
-        for (const auto &[xi, eta] : {std::pair{0.5, 0.}, {0.5, 1.}, {0., 0.5}, {1., 0.5}})
-          points.push_back({in_cell(cell, xi, eta), "the midpoint of a cell's edge"});
+          points.push_back({in_cell(cell, q[0], q[1]), "a Gauss point of a cell"});
+        for (const auto f : cell->face_indices())
+          if (!edge_taken[cell->face_index(f)])
+            {
+              edge_taken[cell->face_index(f)] = true;
+              points.push_back({to_point(cell->face(f)->center()), "the midpoint of a cell's edge"});
+            }
       };
       const auto at_place_point = [&](const auto &cell) {
         const double tolerance = 1e-9 * cell->diameter();
         for (const auto v : cell->vertex_indices())
           for (const Point x : place.points)
-            if (geometry::norm(Point{cell->vertex(v)[0], cell->vertex(v)[1]} - x) <= tolerance)
+            if (geometry::norm(to_point(cell->vertex(v)) - x) <= tolerance)
               return true;
         return false;
       };
@@ -406,8 +415,7 @@ namespace pumpd::coupling
               if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == place.id)
                 {
                   holds_pd_nodes = pd_nodes;
-                  const Point a{cell->face(f)->vertex(0)[0], cell->face(f)->vertex(0)[1]},
-                    b{cell->face(f)->vertex(1)[0], cell->face(f)->vertex(1)[1]};
+                  const Point a = to_point(cell->face(f)->vertex(0)), b = to_point(cell->face(f)->vertex(1));
                   points.push_back({0.5 * (a + b), "the midpoint of a face"});
                   for (const auto &q : face_rule.get_points())
                     points.push_back({a + q[0] * (b - a), "a Gauss point of a face"});
@@ -427,20 +435,23 @@ namespace pumpd::coupling
       const std::string &expression = p.values.at(variable);
       const auto         f          = compile(expression, entry);
       const std::string  assignment = p.place + ": " + variable + " = " + echoed(expression);
-      for (const auto &[x, what] : points)
+      for (const auto &point : points)
         {
-          const double      f0 = f(x, 0.), f1 = f(x, 1.), f2 = f(x, 2.);
-          const double      scale  = std::max({std::abs(f1), std::abs(f2), 1e-300});
-          const std::string values = to_text(f0, 4) + ", " + to_text(f1, 4) + ", " + to_text(f2, 4);
-          const std::string where  = to_text(x) + ", " + what + " of " + p.place + ", it is " + values + " at lambda = 0, 1, 2";
+          const Point  x  = point.x;
+          const double f0 = f(x, 0.), f1 = f(x, 1.), f2 = f(x, 2.);
+          const double scale = std::max({std::abs(f1), std::abs(f2), 1e-300});
+          const auto   where = [&] {
+            return to_text(x) + ", " + point.what + " of " + p.place + ", it is " + to_text(f0, 4) + ", " + to_text(f1, 4) +
+                   ", " + to_text(f2, 4) + " at lambda = 0, 1, 2";
+          };
           if (!std::isfinite(f0) || !std::isfinite(f1) || !std::isfinite(f2))
             throw InvalidParameter(entry, assignment,
                                    variable + " must be finite wherever the methods take it (on and about its place): at " +
-                                     where);
+                                     where());
           if (std::abs(f0) > 1e-12 * scale || std::abs(f2 - 2. * f1) > 1e-9 * scale)
             throw InvalidParameter(entry, assignment,
                                    variable + " must be proportional to the load factor lambda (the methods scale the "
-                                              "whole loading with it): at " + where);
+                                              "whole loading with it): at " + where());
         }
       return [f](Point x) { return f(x, 1.); };
     }
