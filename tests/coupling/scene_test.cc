@@ -2,7 +2,8 @@
 // scenes with exact answers: the Ingraffea beam read from its scene file (named places, the point
 // force per unit load, the body); a plate in uniaxial tension, whose Q1 solution is exact (the
 // mean displacement of the loaded edge and the reaction of the supported one, as the report
-// reads them); expressions of x, y and lambda; a named region held by its cells.
+// reads them); expressions of x, y and lambda, checked between the vertices too; a named region
+// held by its cells.
 #include <gtest/gtest.h>
 
 #include <deal.II/grid/tria.h>
