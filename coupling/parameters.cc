@@ -41,8 +41,7 @@ namespace pumpd::coupling
     Parameters               p;
     dealii::ParameterHandler prm;
     p.add_parameters(prm);
-    check_parameter_file(file);
-    prm.parse_input(file);
+    parse_parameter_file(prm, file);
     return p;
   }
 
@@ -79,7 +78,7 @@ namespace pumpd::coupling
             << r.max_offset / r.spacing << " h of the symmetry line\n";
         return;
       }
-    const Scene scene = build_scene(p.scene);
+    const Scene scene = build_scene(p.scene, &out);
     check_against_scene(p, scene);
     if (scene.cracks.empty() && p.method == "global-local")
       run_global_local_from_initiation(scene, p.global_local_settings(), p.initiation, out);
