@@ -673,7 +673,12 @@ namespace pumpd::coupling
             }
           catch (const InvalidParameter &e)
             {
-              throw InvalidParameter("Initial cracks", trim(line), e.what());
+              // A crack in other units than the mesh lies off the body's box altogether: say where the body is.
+              const geometry::Box box = body.bounding_box();
+              const bool off_box = std::any_of(crack.begin(), crack.end(), [&](Point p) { return !box.contains(p, tolerance); });
+              throw InvalidParameter("Initial cracks", trim(line),
+                                     std::string(e.what()) +
+                                       (off_box ? " (the body spans " + to_text(box) + ", in metres as every length)" : ""));
             }
           // An end off the boundary by less than a tenth of the cell it lies in was meant as a mouth.
           for (const Point end : {crack.front(), crack.back()})
@@ -782,6 +787,24 @@ namespace pumpd::coupling
     }
   } // namespace
 
+  namespace
+  {
+    /// Warns where the body's size lies outside that of solid specimens and structures in metres
+    /// (1 mm to 10 m across): a mesh drawn in millimetres, or in metres for a scene in
+    /// millimetres, still runs, at a size a thousand times off.
+    void warn_of_scale(const geometry::Body &body, std::ostream *progress)
+    {
+      const geometry::Box box  = body.bounding_box();
+      const double        size = std::max(box.width(), box.height());
+      if (progress == nullptr || (size >= 1e-3 && size <= 10.))
+        return;
+      *progress << "warning: Mesh file: the body measures " << pumpd::to_text(size, 3) << " m across ("
+                << to_text(box) << "); every length of a scene is in metres (the mesh, Initial cracks, the "
+                << "sections' lengths): a mesh drawn in millimetres needs Mesh.ScalingFactor = 0.001 in its .geo\n";
+      progress->flush();
+    }
+  } // namespace
+
   Scene build_scene(const SceneSettings &s, std::ostream *progress)
   {
     Scene scene;
@@ -804,6 +827,7 @@ namespace pumpd::coupling
         throw InvalidParameter("Mesh file", s.mesh_file, e.what());
       }
     scene.mesh = tria;
+    warn_of_scale(scene.body, progress);
     const Places places(tria, std::move(names));
     read_conditions(s, places, *tria, scene.conditions);
     check_conflicts(scene.conditions);
