@@ -22,6 +22,11 @@ namespace pumpd::coupling
     dealii::ParameterHandler prm;
     p.add_parameters(prm);
     prm.parse_input(file);
+    return of_handler(prm);
+  }
+
+  ParameterTable ParameterTable::of_handler(const dealii::ParameterHandler &prm)
+  {
     std::stringstream printed;
     prm.print_parameters(printed, dealii::ParameterHandler::ShortPRM);
 

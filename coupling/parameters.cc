@@ -9,6 +9,7 @@
 #include "error.h"
 #include "nucleation.h"
 #include "parameter_file.h"
+#include "parameter_table.h"
 
 namespace pumpd::coupling
 {
@@ -43,6 +44,7 @@ namespace pumpd::coupling
     p.add_parameters(prm);
     check_parameter_file(file);
     prm.parse_input(file);
+    p.cycle.scene_file = ParameterTable::of_handler(prm);
     return p;
   }
 
@@ -52,6 +54,7 @@ namespace pumpd::coupling
     dealii::ParameterHandler prm;
     p.add_parameters(prm);
     prm.parse_input_from_string(text);
+    p.cycle.scene_file = ParameterTable::of_handler(prm);
     return p;
   }
 
