@@ -8,6 +8,7 @@
 
 #include "error.h"
 #include "nucleation.h"
+#include "output_volume.h"
 #include "parameter_file.h"
 #include "parameter_table.h"
 
@@ -70,6 +71,7 @@ namespace pumpd::coupling
         check_tip_radius(scene, p.global);
         check_refinement(scene, p.global, p.scene.max_cells);
       }
+    check_output_volume(p, &scene, p.scene.output_directory);
   }
 
   void run(const Parameters &p, std::ostream &out)
@@ -77,6 +79,7 @@ namespace pumpd::coupling
     make_output_directory("Scene / Output directory", p.scene.output_directory);
     if (p.method == "pd-edge-crack")
       {
+        check_output_volume(p, nullptr, p.scene.output_directory);
         const auto r = run_edge_crack({p.pd.material(p.scene.material), p.pd, p.edge_crack, p.scene.output_directory}, out);
         out << "crack growth onset at K/K_c = " << r.onset_k_over_kc << "; grown crack within "
             << r.max_offset / r.spacing << " h of the symmetry line\n";
