@@ -23,6 +23,11 @@ namespace pumpd::coupling
     dealii::ParameterHandler prm;
     p.add_parameters(prm);
     parse_parameter_file(prm, file);
+    return of_handler(prm);
+  }
+
+  ParameterTable ParameterTable::of_handler(const dealii::ParameterHandler &prm)
+  {
     std::stringstream printed;
     prm.print_parameters(printed, dealii::ParameterHandler::ShortPRM);
 

@@ -26,6 +26,7 @@
 #include "error.h"
 #include "hash.h"
 #include "mesh.h"
+#include "output.h"
 #include "path_metrics.h"
 #include "text.h"
 
@@ -763,6 +764,7 @@ namespace pumpd::coupling
       throw InvalidParameter(entry, directory,
                              "cannot be used (" + error.message() +
                                "): a folder this user can create and write to, or empty to write nothing");
+    reserve_output_directory(entry, directory);
   }
 
   namespace

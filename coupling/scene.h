@@ -99,7 +99,9 @@ namespace pumpd::coupling
   };
 
   /// Creates the folder `directory` (nothing if it is empty: a run that writes nothing) before any
-  /// work; throws InvalidParameter naming `entry` if it cannot be created or written to.
+  /// work and reserves it for this run (basics/output.h: the first file written into it locks it
+  /// against other pumpd processes); throws InvalidParameter naming `entry` if it cannot be
+  /// created or written to.
   void make_output_directory(const std::string &entry, const std::string &directory);
 
   /// Reads the mesh and builds the scene. Throws InvalidParameter naming the entry and what is

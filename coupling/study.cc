@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "error.h"
+#include "output.h"
 #include "parameters.h"
 #include "program.h"
 #include "study_plan.h"
@@ -243,6 +244,8 @@ namespace pumpd::coupling
         , runs(directory)
         , out(out)
       {
+        // Planned and checked: the study writes from here on (its runs lock their own directories).
+        claim_output_directory(directory);
         out << "study: " << scene_file << ", " << plan.size() << " runs into " << directory << " (program "
             << version << ")" << std::endl;
       }
