@@ -18,7 +18,9 @@
 #include <iomanip>
 #include <iostream>
 #include <limits>
+#include <iterator>
 #include <map>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -216,6 +218,7 @@ namespace pumpd::coupling
                              std::set<conditions::Place::Kind> allowed) const
       {
         using Kind = conditions::Place::Kind;
+        check_unambiguous(entry, text, name, allowed);
         conditions::Place place;
         place.name = name;
         if (const auto b = names.boundaries.find(name); b != names.boundaries.end() && allowed.count(Kind::boundary))
@@ -261,6 +264,12 @@ namespace pumpd::coupling
                                                                   : "";
             if (!kind.empty())
               throw InvalidParameter(entry, text, "\"" + name + "\" is a " + kind + ", but this entry takes a " + kinds(allowed));
+            // Messages fold runs of spaces into one, so the spaces are shown as '_'.
+            if (const auto spaced = differing_in_spaces(name))
+              throw InvalidParameter(entry, text, "the mesh has no place named \"" + name +
+                                                    "\", but one that differs only in spaces (each space as _: " +
+                                                    underscored(name) + " here, " + underscored(*spaced) +
+                                                    " in the mesh): names match exactly; rename one");
             throw InvalidParameter(entry, text, "the mesh has no " + kinds(allowed) + " named \"" + name + "\" (it names " + listing() + ")");
           }
         std::sort(place.points.begin(), place.points.end(),
@@ -276,11 +285,60 @@ namespace pumpd::coupling
       }
 
     private:
-      static std::string kinds(const std::set<conditions::Place::Kind> &allowed)
+      /// gmsh lets a curve, a point and a surface share a physical name; an entry that takes more
+      /// than one of those kinds could not tell which is meant.
+      void check_unambiguous(const std::string &entry, const std::string &text, const std::string &name,
+                             const std::set<conditions::Place::Kind> &allowed) const
+      {
+        using Kind = conditions::Place::Kind;
+        std::set<Kind> named;
+        if (names.boundaries.count(name))
+          named.insert(Kind::boundary);
+        if (names.points.count(name))
+          named.insert(Kind::point);
+        if (names.regions.count(name))
+          named.insert(Kind::region);
+        std::set<Kind> taken;
+        std::set_intersection(named.begin(), named.end(), allowed.begin(), allowed.end(), std::inserter(taken, taken.end()));
+        if (taken.size() > 1)
+          throw InvalidParameter(entry, text, "the mesh names a " + kinds(taken, " and a ") + " \"" + name +
+                                                "\", and this entry takes either: give them different physical names "
+                                                "in the .geo");
+      }
+
+      /// A name of the mesh equal to `name` once leading, trailing and repeated spaces are dropped.
+      std::optional<std::string> differing_in_spaces(const std::string &name) const
+      {
+        const auto squeezed = [](const std::string &s) {
+          std::istringstream words(s);
+          std::string        out, word;
+          while (words >> word)
+            out += (out.empty() ? "" : " ") + word;
+          return out;
+        };
+        std::optional<std::string> found;
+        const auto                 look = [&](const auto &group) {
+          for (const auto &named : group)
+            if (squeezed(named.first) == squeezed(name))
+              found = named.first;
+        };
+        look(names.boundaries);
+        look(names.points);
+        look(names.regions);
+        return found;
+      }
+
+      static std::string underscored(std::string name)
+      {
+        std::replace_if(name.begin(), name.end(), [](unsigned char c) { return std::isspace(c); }, '_');
+        return name;
+      }
+
+      static std::string kinds(const std::set<conditions::Place::Kind> &allowed, const std::string &separator = " or ")
       {
         std::string s;
         for (const auto k : allowed)
-          s += (s.empty() ? "" : " or ") + std::string(k == conditions::Place::Kind::boundary ? "boundary (Physical Curve)"
+          s += (s.empty() ? "" : separator) + std::string(k == conditions::Place::Kind::boundary ? "boundary (Physical Curve)"
                                                        : k == conditions::Place::Kind::point  ? "point (Physical Point)"
                                                                                                : "region (Physical Surface)");
         return s;
@@ -290,11 +348,11 @@ namespace pumpd::coupling
       {
         std::string s;
         for (const auto &[n, id] : names.boundaries)
-          s += (s.empty() ? "" : ", ") + n + " (boundary)";
+          s += (s.empty() ? "\"" : ", \"") + n + "\" (boundary)";
         for (const auto &[n, p] : names.points)
-          s += (s.empty() ? "" : ", ") + n + " (point)";
+          s += (s.empty() ? "\"" : ", \"") + n + "\" (point)";
         for (const auto &[n, id] : names.regions)
-          s += (s.empty() ? "" : ", ") + n + " (region)";
+          s += (s.empty() ? "\"" : ", \"") + n + "\" (region)";
         return s.empty() ? "nothing: add physical names to the .geo" : s;
       }
 
