@@ -21,7 +21,8 @@ run: build
 	$(BUILD)/coupling/pumpd $(SCENE)
 	@dir=$$(sed -n 's/^ *set Output directory *= *//p' $(SCENE)); \
 	  if [ -f "$$dir/damage.csv" ]; then /usr/bin/python3 scripts/plot_pd_damage.py "$$dir"; fi; \
-	  if [ -f "$$dir/crack_path.csv" ]; then /usr/bin/python3 scripts/plot_crack_path.py "$$dir"; fi
+	  if [ -f "$$dir/crack_path.csv" ]; then /usr/bin/python3 scripts/plot_crack_path.py "$$dir"; fi; \
+	  if [ -f "$$dir/load_displacement.csv" ]; then /usr/bin/python3 scripts/plot_load_displacement.py "$$dir" $(SCENE); fi
 
 test: build
 	cd $(BUILD) && ctest -LE "bench|study" --output-on-failure
