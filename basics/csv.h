@@ -1,6 +1,7 @@
 // The one CSV writer of pumpd's results (crack paths, load steps, load-displacement, the study's
 // tables): a header, then one row per call, flushed at once so that a long run's progress is on
-// disk line by line; and the reader of such files.
+// disk line by line (a row that cannot be written stops the run: output.h); and the reader of
+// such files.
 #pragma once
 
 #include <fstream>
@@ -27,8 +28,7 @@ namespace pumpd
         return;
       bool first = true;
       ((out << (first ? "" : ",") << std::setprecision(10) << values, first = false), ...);
-      out << "\n";
-      out.flush();
+      end_row();
     }
     /// One row of cells, as they are.
     void row(const std::vector<std::string> &cells);
@@ -36,6 +36,10 @@ namespace pumpd
     explicit operator bool() const { return out.is_open(); }
 
   private:
+    /// Ends the row and flushes it; throws as write_failed (output.h) if it did not reach the file.
+    void end_row();
+
+    std::string   path;
     std::ofstream out;
   };
 
