@@ -338,7 +338,14 @@ namespace pumpd::global
             throw InvalidParameter("Mesh file", file,
                                    "the named point \"" + name + "\" needs a gmsh msh2 file (gmsh -format msh2)");
           for (const auto id : point_nodes[name])
-            names.points[name].push_back(node.at(id));
+            {
+              const auto found = node.find(id);
+              if (found == node.end())
+                throw InvalidParameter("Mesh file", file,
+                                       "the named point \"" + name + "\" is node " + std::to_string(id) +
+                                         ", which the mesh's $Nodes do not list (a damaged file?)");
+              names.points[name].push_back(found->second);
+            }
         }
       return names;
     }
@@ -353,8 +360,8 @@ namespace pumpd::global
       int           file_type = 0;
       if (std::getline(in, line) && trim(line) == "$MeshFormat" && in >> version >> file_type && file_type != 0)
         throw InvalidParameter("Mesh file", file,
-                               "a binary gmsh file, but pumpd reads ASCII .msh: write it with gmsh -format msh2 "
-                               "without -bin, or with Mesh.Binary = 0");
+                               "is a binary gmsh file, but pumpd reads ASCII .msh only: write it with gmsh -format msh2 "
+                               "without -bin (Mesh.Binary = 0)");
     }
 
     /// The name of a gmsh element type (gmsh's reference manual, "MSH file format").
@@ -387,16 +394,18 @@ namespace pumpd::global
              "Mesh.RecombineAll = 1)";
     }
 
+    using Cell = dealii::Triangulation<2>::active_cell_iterator;
+
     geometry::Point at(const dealii::Point<2> &p) { return {p[0], p[1]}; }
 
     /// A cell's vertices anticlockwise (deal.II numbers them lexicographically).
-    std::array<geometry::Point, 4> corners(const dealii::Triangulation<2>::active_cell_iterator &cell)
+    std::array<geometry::Point, 4> corners(const Cell &cell)
     {
       return {{at(cell->vertex(0)), at(cell->vertex(1)), at(cell->vertex(3)), at(cell->vertex(2))}};
     }
 
     /// A cell for a message: its index and its vertices, anticlockwise.
-    std::string cell_text(const dealii::Triangulation<2>::active_cell_iterator &cell)
+    std::string cell_text(const Cell &cell)
     {
       const auto  p    = corners(cell);
       std::string text = "cell " + std::to_string(cell->active_cell_index()) + " at ";
@@ -405,65 +414,79 @@ namespace pumpd::global
       return text;
     }
 
+    /// Below this, a cell's area against its diameter squared, or the sine of a corner, is
+    /// taken for zero. K stays accurate to aspect ratios far beyond it at a crack
+    /// (docs/global-solver.md); at it, deal.II's inverse map of the cell, which locates points,
+    /// fails.
+    constexpr double degenerate = 1e-9;
+
+    /// What is wrong with a cell of (almost) no area: nothing if it has an area.
+    std::optional<std::string> degenerate_cell(const Cell &cell, const dealii::Triangulation<2> &tria)
+    {
+      const auto p    = corners(cell);
+      double     area = 0.;
+      for (std::size_t k = 0; k < 4; ++k)
+        area += 0.5 * geometry::cross(p[k], p[(k + 1) % 4]);
+      const double diameter = cell->diameter();
+      if (area > degenerate * diameter * diameter)
+        return std::nullopt;
+      const auto        box   = dealii::GridTools::compute_bounding_box(tria);
+      const bool        flat  = box.side_length(0) == 0. || box.side_length(1) == 0.;
+      const std::string plane = flat ? " (every vertex of the mesh has the same " +
+                                         std::string(box.side_length(1) == 0. ? "y" : "x") +
+                                         ": a mesh in another plane? pumpd takes x and y)"
+                                     : "";
+      return "has an area of " + to_text(area, 3) + " m^2 for its diameter of " + to_text(diameter, 3) + " m: " +
+             (area < 0. ? "an inverted" : "a degenerate") + " cell" + plane;
+    }
+
+    /// What is wrong with a cell whose bilinear map is not one to one: det J is affine in each
+    /// reference coordinate, so its signs at the four vertices (the cross products of the edges
+    /// there) decide it everywhere.
+    std::optional<std::string> tangled_cell(const Cell &cell)
+    {
+      const auto p = corners(cell);
+      for (std::size_t k = 0; k < 4; ++k)
+        {
+          const geometry::Point next = p[(k + 1) % 4] - p[k], previous = p[(k + 3) % 4] - p[k];
+          const double sine = geometry::cross(next, previous) / (geometry::norm(next) * geometry::norm(previous));
+          if (!(sine > degenerate))
+            return "is tangled: the Jacobian of its map vanishes or turns negative at " + to_text(p[k]) +
+                   " (a corner of 180 degrees or more, or edges that cross)";
+        }
+      return std::nullopt;
+    }
+
+    /// What is wrong with a cell that lies on one side of an edge with its neighbour: deal.II
+    /// turns a cell whose vertices run clockwise around, so a cell flipped over an edge reads as
+    /// one that overlaps its neighbour.
+    std::optional<std::string> folded_cell(const Cell &cell)
+    {
+      for (const unsigned int f : cell->face_indices())
+        if (!cell->at_boundary(f))
+          {
+            const geometry::Point a = at(cell->face(f)->vertex(0)), edge = at(cell->face(f)->vertex(1)) - a;
+            const auto            other = cell->neighbor(f);
+            if (geometry::cross(edge, at(cell->center()) - a) * geometry::cross(edge, at(other->center()) - a) >= 0.)
+              return "and cell " + std::to_string(other->active_cell_index()) +
+                     " lie on the same side of their common edge from " + to_text(a) + ": the mesh folds over itself";
+          }
+      return std::nullopt;
+    }
+
     /// Refuses a mesh whose cells do not each map the reference square one to one onto the
-    /// body, naming the first such cell:
-    /// - a degenerate cell: area at most 1e-9 of its diameter squared (an aspect ratio beyond
-    ///   about 1e9, or none: its vertices on one line). K stays accurate to such aspect ratios
-    ///   at a crack (docs/global-solver.md), and beyond them deal.II's inverse map of the cell,
-    ///   which locates points, fails;
-    /// - a tangled cell: the Jacobian of its bilinear map vanishes or turns negative at a vertex
-    ///   (a corner of 180 degrees or more, or edges that cross). det J is affine in each
-    ///   reference coordinate, so its signs at the four vertices decide it everywhere;
-    /// - a fold: two neighbours on one side of their common edge (deal.II turns a cell whose
-    ///   vertices run clockwise around, so a cell flipped over an edge reads as one that
-    ///   overlaps its neighbour).
+    /// body (degenerate, tangled or folded cells), naming the first such cell.
     void check_cells(const dealii::Triangulation<2> &tria, const std::string &file)
     {
-      using geometry::Point;
-      const auto refuse = [&](const auto &cell, const std::string &what) {
-        throw InvalidParameter("Mesh file", file, cell_text(cell) + " " + what);
-      };
-      const double degenerate = 1e-9;
       for (const auto &cell : tria.active_cell_iterators())
         {
-          const auto p = corners(cell);
-          double area = 0.;
-          for (std::size_t k = 0; k < 4; ++k)
-            area += 0.5 * geometry::cross(p[k], p[(k + 1) % 4]);
-          const double diameter = cell->diameter();
-          if (area <= degenerate * diameter * diameter)
-            {
-              const auto   box  = dealii::GridTools::compute_bounding_box(tria);
-              const bool   flat = box.side_length(0) == 0. || box.side_length(1) == 0.;
-              refuse(cell, "has an area of " + to_text(area, 3) + " m^2 for its diameter of " + to_text(diameter, 3) +
-                             " m: " + std::string(area < 0. ? "an inverted" : "a degenerate") + " cell" +
-                             (flat ? " (every vertex of the mesh has the same " +
-                                       std::string(box.side_length(1) == 0. ? "y" : "x") +
-                                       ": a mesh in another plane? pumpd takes x and y)"
-                                   : ""));
-            }
-        }
-      for (const auto &cell : tria.active_cell_iterators())
-        {
-          const auto p = corners(cell);
-          for (std::size_t k = 0; k < 4; ++k)
-            {
-              const Point  next = p[(k + 1) % 4] - p[k], previous = p[(k + 3) % 4] - p[k];
-              const double sine = geometry::cross(next, previous) / (geometry::norm(next) * geometry::norm(previous));
-              if (!(sine > degenerate))
-                refuse(cell, "is tangled: the Jacobian of its map vanishes or turns negative at " + to_text(p[k]) +
-                               " (a corner of 180 degrees or more, or edges that cross)");
-            }
-          for (const unsigned int f : cell->face_indices())
-            if (!cell->at_boundary(f))
-              {
-                const Point a = at(cell->face(f)->vertex(0)), edge = at(cell->face(f)->vertex(1)) - a;
-                const auto  other = cell->neighbor(f);
-                if (geometry::cross(edge, at(cell->center()) - a) * geometry::cross(edge, at(other->center()) - a) >= 0.)
-                  refuse(cell, "and cell " + std::to_string(other->active_cell_index()) +
-                                 " lie on the same side of their common edge from " + to_text(a) +
-                                 ": the mesh folds over itself");
-              }
+          auto wrong = degenerate_cell(cell, tria);
+          if (!wrong)
+            wrong = tangled_cell(cell);
+          if (!wrong)
+            wrong = folded_cell(cell);
+          if (wrong)
+            throw InvalidParameter("Mesh file", file, cell_text(cell) + " " + *wrong);
         }
     }
 
