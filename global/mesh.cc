@@ -414,10 +414,10 @@ namespace pumpd::global
       return text;
     }
 
-    /// Below this, a cell's area against its diameter squared, or the sine of a corner, is
-    /// taken for zero. K stays accurate to aspect ratios far beyond it at a crack
-    /// (docs/global-solver.md); at it, deal.II's inverse map of the cell, which locates points,
-    /// fails.
+    /// Below this, a cell's area against its diameter squared (about 1 / its aspect ratio), or
+    /// the sine of a corner, is taken for zero. K at a crack through such thin cells stays as
+    /// accurate as on square ones up to it (docs/global-solver.md); a little beyond it, deal.II's
+    /// inverse map of the cell, which locates points, fails.
     constexpr double degenerate = 1e-9;
 
     /// What is wrong with a cell of (almost) no area: nothing if it has an area.
@@ -430,14 +430,15 @@ namespace pumpd::global
       const double diameter = cell->diameter();
       if (area > degenerate * diameter * diameter)
         return std::nullopt;
-      const auto        box   = dealii::GridTools::compute_bounding_box(tria);
-      const bool        flat  = box.side_length(0) == 0. || box.side_length(1) == 0.;
-      const std::string plane = flat ? " (every vertex of the mesh has the same " +
-                                         std::string(box.side_length(1) == 0. ? "y" : "x") +
-                                         ": a mesh in another plane? pumpd takes x and y)"
-                                     : "";
+      const auto        box  = dealii::GridTools::compute_bounding_box(tria);
+      const bool        flat = box.side_length(0) == 0. || box.side_length(1) == 0.;
+      const std::string why  = flat ? "; every vertex of the mesh has the same " +
+                                       std::string(box.side_length(1) == 0. ? "y" : "x") +
+                                       ": a mesh in another plane? pumpd takes x and y"
+                                    : ", at most " + to_text(degenerate) + " of its diameter squared (aspect ratio " +
+                                       to_text(1. / degenerate) + " or more)";
       return "has an area of " + to_text(area, 3) + " m^2 for its diameter of " + to_text(diameter, 3) + " m: " +
-             (area < 0. ? "an inverted" : "a degenerate") + " cell" + plane;
+             (area < 0. ? "an inverted" : "a degenerate") + " cell" + why;
     }
 
     /// What is wrong with a cell whose bilinear map is not one to one: det J is affine in each
