@@ -6,10 +6,10 @@
 //                               + sum_k sum_j (F_kj(x) - F_kj(x_p)) c_pkj  (p in tip nodes of k) ]
 // phi_p: the Q1 hat function of node p; H_k the Heaviside function of crack k's level set, F_kj
 // the branch functions of the tip of crack k nearest to node p. Heaviside nodes of crack k:
-// support cut completely by crack k, no tip of k in it, smaller side of the support at least
-// `min_cut_fraction` of it, or the shifted function's energy int |grad phi_p|^2 on it at least
-// `min_cut_fraction` (a cell thin across the crack). Tip nodes of crack k: within `tip_radius` of a tip of k (geometric
-// enrichment) or on a cell that holds it. A node carries one block per crack (Heaviside or tip):
+// support cut completely by crack k, no tip of k in it, and the smaller side of the support at
+// least `min_cut_fraction` of it, or int |grad phi_p|^2 over the side the node is not on at least
+// `min_cut_fraction` (cells thin across the crack). Tip nodes of crack k: within `tip_radius` of a
+// tip of k (geometric enrichment) or on a cell that holds it. A node carries one block per crack (Heaviside or tip):
 // a node two cracks cut has two Heaviside blocks. Cut cells: a cell several cracks cut is split
 // by the lines of all their pieces in it (cut_cell.h), so each sub-triangle lies on one side of
 // every crack and the discontinuous integrands are integrated exactly as for one crack. The enriched
