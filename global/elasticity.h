@@ -6,9 +6,10 @@
 //                               + sum_k sum_j (F_kj(x) - F_kj(x_p)) c_pkj  (p in tip nodes of k) ]
 // phi_p: the Q1 hat function of node p; H_k the Heaviside function of crack k's level set, F_kj
 // the branch functions of the tip of crack k nearest to node p. Heaviside nodes of crack k:
-// support cut completely by crack k, no tip of k in it, smaller side of the support at least
-// `min_cut_fraction` of it. Tip nodes of crack k: within `tip_radius` of a tip of k (geometric
-// enrichment) or on a cell that holds it. A node carries one block per crack (Heaviside or tip):
+// support cut completely by crack k, no tip of k in it, and the smaller side of the support at
+// least `min_cut_fraction` of it, or int |grad phi_p|^2 over the side the node is not on at least
+// `min_cut_fraction` (cells thin across the crack). Tip nodes of crack k: within `tip_radius` of a
+// tip of k (geometric enrichment) or on a cell that holds it. A node carries one block per crack (Heaviside or tip):
 // a node two cracks cut has two Heaviside blocks. Cut cells: a cell several cracks cut is split
 // by the lines of all their pieces in it (cut_cell.h), so each sub-triangle lies on one side of
 // every crack and the discontinuous integrands are integrated exactly as for one crack. The enriched
@@ -58,7 +59,7 @@ namespace pumpd::global
   struct EnrichmentSettings
   {
     double       tip_radius       = 0.;   ///< [m]; at least the largest cell diameter at a tip
-    double       min_cut_fraction = 1e-4; ///< drop H below this support fraction (conditioning)
+    double       min_cut_fraction = 1e-4; ///< drop H below this support fraction and energy (conditioning)
     unsigned int cut_order        = 4;    ///< Gauss simplex order on cut sub-triangles
     unsigned int tip_order        = 8;    ///< Gauss / Duffy order where branch functions live
     /// Gauss order on tip-enriched cells whose centre lies more than 2.5 diameters from every tip:

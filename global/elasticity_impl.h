@@ -135,6 +135,9 @@ namespace pumpd::global
     void         assemble();
     SolveReport  solve(const SolverSettings &solver);
     unsigned int count(NodeKind k) const;
+    /// [crack][node]: int |grad phi_p|^2 over the side of crack c that node p is not on, for the
+    /// (c, p) marked in `wanted` (0 elsewhere).
+    std::vector<std::vector<double>> far_side_energy(const std::vector<std::vector<char>> &wanted) const;
 
     /// The cell's basis: standard and enriched functions of the nodes its vertices depend on.
     std::vector<LocalFunction> local_functions(const dealii::DoFHandler<2>::active_cell_iterator &cell) const;

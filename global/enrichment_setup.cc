@@ -96,6 +96,49 @@ namespace pumpd::global
     }
   } // namespace
 
+  std::vector<std::vector<double>>
+  EnrichedElasticity::Impl::far_side_energy(const std::vector<std::vector<char>> &wanted) const
+  {
+    const unsigned int               n_cracks = cracks.size();
+    std::vector<std::vector<double>> energy(n_cracks, std::vector<double>(nodes.size(), 0.));
+    const auto any = [](const std::vector<char> &v) { return std::find(v.begin(), v.end(), 1) != v.end(); };
+    if (std::none_of(wanted.begin(), wanted.end(), any))
+      return energy;
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        cell->get_dof_indices(dofs);
+        std::map<std::pair<unsigned int, unsigned int>, std::array<double, 4>> weights; // (crack, node): per vertex
+        for (unsigned int v = 0; v < 4; ++v)
+          for (const auto &[p, w] : parents[dofs[v]])
+            for (unsigned int c = 0; c < n_cracks; ++c)
+              if (wanted[c][p])
+                weights[{c, p}][v] += w;
+        if (weights.empty())
+          continue;
+        const CellData &data = cells[cell->active_cell_index()];
+        FEValues<2>     fv(mapping, fe, data.subdivided ? data.quadrature : Quadrature<2>(gauss),
+                           update_gradients | update_JxW_values);
+        fv.reinit(cell);
+        for (const auto &[key, weight] : weights)
+          {
+            const auto [c, p] = key;
+            const int own     = cracks[c].side(to_point(support[nodes[p]]));
+            for (unsigned int q = 0; q < fv.n_quadrature_points; ++q)
+              {
+                const int side = data.cut_by[c] ? data.triangle_side[data.triangle_of_point[q] * n_cracks + c] : data.side[c];
+                if (side == own)
+                  continue;
+                Tensor<1, 2> grad;
+                for (unsigned int v = 0; v < 4; ++v)
+                  grad += weight[v] * fv.shape_grad(v, q);
+                energy[c][p] += grad.norm_square() * fv.JxW(q);
+              }
+          }
+      }
+    return energy;
+  }
+
   unsigned int EnrichedElasticity::Impl::count(NodeKind k) const
   {
     return std::count(kind.begin(), kind.end(), k);
@@ -284,6 +327,22 @@ namespace pumpd::global
                 }
           }
       }
+    // Pass 3: the Heaviside blocks. A block whose support the crack cuts into a part of less than
+    // min_cut_fraction of its area is dropped (conditioning), unless its shifted function still
+    // carries energy there: int |grad phi_p|^2 over the side the node is not on (dimensionless,
+    // about 8/3 over a whole support of square cells) of at least min_cut_fraction. Without the
+    // block, the jump across that part is carried by the other nodes' blocks and the node's
+    // hat function strains the part by it. In a cell of ordinary shape a part of small area is
+    // thin against the cell too, phi_p is small on it and the strain energy as small as its
+    // area; in a cell thin across the crack it is a fair part of the cell, phi_p is not small on
+    // it, and the strained part acts as a spring that holds the crack shut.
+    std::vector<std::vector<char>> barely_cut(n_cracks, std::vector<char>(n_nodes, 0));
+    for (unsigned int p = 0; p < n_nodes; ++p)
+      for (unsigned int c = 0; c < n_cracks; ++c)
+        barely_cut[c][p] = node_tip[c][p] < 0 && support_cut[c][p] && !support_tip[c][p] &&
+                           std::min(area_plus[c][p], area_minus[c][p]) <
+                             settings.min_cut_fraction * (area_plus[c][p] + area_minus[c][p]);
+    const auto far_energy = far_side_energy(barely_cut);
     for (unsigned int p = 0; p < n_nodes; ++p)
       for (unsigned int c = 0; c < n_cracks; ++c)
         {
@@ -291,8 +350,7 @@ namespace pumpd::global
           if (node_tip[c][p] >= 0)
             enrichment[p].push_back({c, node_tip[c][p], 0, cracks[c].branch_functions(x, node_tip[c][p]).value});
           else if (support_cut[c][p] && !support_tip[c][p] &&
-                   std::min(area_plus[c][p], area_minus[c][p]) >=
-                     settings.min_cut_fraction * (area_plus[c][p] + area_minus[c][p]))
+                   (!barely_cut[c][p] || far_energy[c][p] >= settings.min_cut_fraction))
             {
               enrichment[p].push_back({c, -1, 0, {{double(cracks[c].side(x)), 0., 0., 0.}}});
               if (kind[p] == NodeKind::standard)

@@ -1,6 +1,7 @@
 #include "mesh.h"
 
 #include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/reference_cell.h>
 #include <deal.II/grid/tria.h>
 
@@ -337,9 +338,157 @@ namespace pumpd::global
             throw InvalidParameter("Mesh file", file,
                                    "the named point \"" + name + "\" needs a gmsh msh2 file (gmsh -format msh2)");
           for (const auto id : point_nodes[name])
-            names.points[name].push_back(node.at(id));
+            {
+              const auto found = node.find(id);
+              if (found == node.end())
+                throw InvalidParameter("Mesh file", file,
+                                       "the named point \"" + name + "\" is node " + std::to_string(id) +
+                                         ", which the mesh's $Nodes do not list (a damaged file?)");
+              names.points[name].push_back(found->second);
+            }
         }
       return names;
+    }
+
+    /// Refuses a binary gmsh file ($MeshFormat's file-type 1): deal.II reads ASCII only, and
+    /// fails on the binary data with a message that does not say so.
+    void check_ascii(const fs::path &msh, const std::string &file)
+    {
+      std::ifstream in(msh);
+      std::string   line;
+      double        version   = 0.;
+      int           file_type = 0;
+      if (std::getline(in, line) && trim(line) == "$MeshFormat" && in >> version >> file_type && file_type != 0)
+        throw InvalidParameter("Mesh file", file,
+                               "is a binary gmsh file, but pumpd reads ASCII .msh only: write it with gmsh -format msh2 "
+                               "without -bin (Mesh.Binary = 0)");
+    }
+
+    /// The name of a gmsh element type (gmsh's reference manual, "MSH file format").
+    std::string gmsh_element(int type)
+    {
+      static const std::map<int, std::string> names = {
+        {1, "2-node line"},           {2, "3-node triangle"},       {3, "4-node quadrangle"},
+        {4, "4-node tetrahedron"},    {5, "8-node hexahedron"},     {6, "6-node prism"},
+        {7, "5-node pyramid"},        {8, "3-node line"},           {9, "6-node triangle"},
+        {10, "9-node quadrangle"},    {11, "10-node tetrahedron"},  {12, "27-node hexahedron"},
+        {13, "18-node prism"},        {14, "14-node pyramid"},      {15, "1-node point"},
+        {16, "8-node quadrangle"},    {17, "20-node hexahedron"},   {18, "15-node prism"},
+        {19, "13-node pyramid"}};
+      const auto name = names.find(type);
+      return name != names.end() ? name->second : "unknown";
+    }
+
+    /// What deal.II's reader says of an element type it does not read, made true: its list of
+    /// the types it reads names some (3D ones) pumpd does not take, and it is cut off.
+    std::optional<std::string> unsupported_element(const std::string &what)
+    {
+      static const std::regex element(R"re(The Element Identifier <(-?[0-9]+)> is not supported)re");
+      std::smatch             m;
+      if (!std::regex_search(what, m, element))
+        return std::nullopt;
+      const int type = std::stoi(m[1]);
+      return "has elements of gmsh type " + m[1].str() + " (" + gmsh_element(type) +
+             "), which pumpd does not read: it takes a 2D mesh of 4-node quadrangles (type 3), with "
+             "2-node lines (1) and points (15) for the physical names (gmsh -2 with Mesh.ElementOrder = 1, "
+             "Mesh.RecombineAll = 1)";
+    }
+
+    using Cell = dealii::Triangulation<2>::active_cell_iterator;
+
+    geometry::Point at(const dealii::Point<2> &p) { return {p[0], p[1]}; }
+
+    /// A cell's vertices anticlockwise (deal.II numbers them lexicographically).
+    std::array<geometry::Point, 4> corners(const Cell &cell)
+    {
+      return {{at(cell->vertex(0)), at(cell->vertex(1)), at(cell->vertex(3)), at(cell->vertex(2))}};
+    }
+
+    /// A cell for a message: its index and its vertices, anticlockwise.
+    std::string cell_text(const Cell &cell)
+    {
+      const auto  p    = corners(cell);
+      std::string text = "cell " + std::to_string(cell->active_cell_index()) + " at ";
+      for (std::size_t k = 0; k < 4; ++k)
+        text += (k > 0 ? ", " : "") + to_text(p[k]);
+      return text;
+    }
+
+    /// Below this, a cell's area against its diameter squared (about 1 / its aspect ratio), or
+    /// the sine of a corner, is taken for zero. K at a crack through such thin cells stays as
+    /// accurate as on square ones up to it (docs/global-solver.md); a little beyond it, deal.II's
+    /// inverse map of the cell, which locates points, fails.
+    constexpr double degenerate = 1e-9;
+
+    /// What is wrong with a cell of (almost) no area: nothing if it has an area.
+    std::optional<std::string> degenerate_cell(const Cell &cell, const dealii::Triangulation<2> &tria)
+    {
+      const auto p    = corners(cell);
+      double     area = 0.;
+      for (std::size_t k = 0; k < 4; ++k)
+        area += 0.5 * geometry::cross(p[k], p[(k + 1) % 4]);
+      const double diameter = cell->diameter();
+      if (area > degenerate * diameter * diameter)
+        return std::nullopt;
+      const auto        box  = dealii::GridTools::compute_bounding_box(tria);
+      const bool        flat = box.side_length(0) == 0. || box.side_length(1) == 0.;
+      const std::string why  = flat ? "; every vertex of the mesh has the same " +
+                                       std::string(box.side_length(1) == 0. ? "y" : "x") +
+                                       ": a mesh in another plane? pumpd takes x and y"
+                                    : ", at most " + to_text(degenerate) + " of its diameter squared (aspect ratio " +
+                                       to_text(1. / degenerate) + " or more)";
+      return "has an area of " + to_text(area, 3) + " m^2 for its diameter of " + to_text(diameter, 3) + " m: " +
+             (area < 0. ? "an inverted" : "a degenerate") + " cell" + why;
+    }
+
+    /// What is wrong with a cell whose bilinear map is not one to one: det J is affine in each
+    /// reference coordinate, so its signs at the four vertices (the cross products of the edges
+    /// there) decide it everywhere.
+    std::optional<std::string> tangled_cell(const Cell &cell)
+    {
+      const auto p = corners(cell);
+      for (std::size_t k = 0; k < 4; ++k)
+        {
+          const geometry::Point next = p[(k + 1) % 4] - p[k], previous = p[(k + 3) % 4] - p[k];
+          const double sine = geometry::cross(next, previous) / (geometry::norm(next) * geometry::norm(previous));
+          if (!(sine > degenerate))
+            return "is tangled: the Jacobian of its map vanishes or turns negative at " + to_text(p[k]) +
+                   " (a corner of 180 degrees or more, or edges that cross)";
+        }
+      return std::nullopt;
+    }
+
+    /// What is wrong with a cell that lies on one side of an edge with its neighbour: deal.II
+    /// turns a cell whose vertices run clockwise around, so a cell flipped over an edge reads as
+    /// one that overlaps its neighbour.
+    std::optional<std::string> folded_cell(const Cell &cell)
+    {
+      for (const unsigned int f : cell->face_indices())
+        if (!cell->at_boundary(f))
+          {
+            const geometry::Point a = at(cell->face(f)->vertex(0)), edge = at(cell->face(f)->vertex(1)) - a;
+            const auto            other = cell->neighbor(f);
+            if (geometry::cross(edge, at(cell->center()) - a) * geometry::cross(edge, at(other->center()) - a) >= 0.)
+              return "and cell " + std::to_string(other->active_cell_index()) +
+                     " lie on the same side of their common edge from " + to_text(a) + ": the mesh folds over itself";
+          }
+      return std::nullopt;
+    }
+
+    /// Refuses a mesh whose cells do not each map the reference square one to one onto the
+    /// body (degenerate, tangled or folded cells), naming the first such cell.
+    void check_cells(const dealii::Triangulation<2> &tria, const std::string &file)
+    {
+      for (const auto &cell : tria.active_cell_iterators())
+        {
+          auto wrong = degenerate_cell(cell, tria);
+          if (!wrong)
+            wrong = tangled_cell(cell);
+          if (!wrong)
+            wrong = folded_cell(cell);
+          if (wrong)
+            throw InvalidParameter("Mesh file", file, cell_text(cell) + " " + *wrong);
+        }
     }
 
     /// Reads a gmsh .msh into `tria`; `file` is the name the user gave (for messages).
@@ -348,6 +497,7 @@ namespace pumpd::global
       std::ifstream in(msh);
       if (!in)
         throw InvalidParameter("Mesh file", file, "cannot be opened");
+      check_ascii(msh, file);
 
       tria.clear();
       dealii::GridIn<2> grid_in;
@@ -365,6 +515,8 @@ namespace pumpd::global
             throw InvalidParameter("Mesh file", file,
                                    "the mesh has no 2D cells that deal.II reads: name the body's surface with "
                                    "Physical Surface(\"...\") = {...} in the .geo");
+          if (const auto why = unsupported_element(e.what()))
+            throw InvalidParameter("Mesh file", file, *why);
           throw InvalidParameter("Mesh file", file,
                                  "not a readable gmsh mesh (" + one_line(e.what()) + ")");
         }
@@ -381,6 +533,15 @@ namespace pumpd::global
                                  "quadrilateral cells only, but " + std::to_string(not_quads) +
                                    " of " + std::to_string(n) +
                                    " cells are not quadrilaterals (recombine the mesh in gmsh)");
+        }
+      try
+        {
+          check_cells(tria, file);
+        }
+      catch (const InvalidParameter &)
+        {
+          tria.clear();
+          throw;
         }
     }
 

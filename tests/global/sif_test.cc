@@ -123,6 +123,30 @@ namespace
     return solve(tria, {{0., -2., 1., 2.}, {}}, {{0., 0.}, {a, 0.}}, {1., -2.}, {1., 2.}, true, 0.15, 1.);
   }
 
+  /// SENT with a = 0.5 on the 40 x 160 mesh (h = 1 / 40) whose row of cells that holds the crack
+  /// line is h / aspect high, the crack at the fraction `at` of its height; the tip 0.37 h right
+  /// of a vertical mesh line, the other rows and columns of about h (study_sliver_cells' rows).
+  Result sent_with_sliver_row(double aspect, double at)
+  {
+    const double a = 0.5, h = 1. / 40., thin = h / aspect;
+    // Steps of about h over [from, to] with one step `step` whose lower end lies `below` under `at`.
+    const auto steps = [&](double from, double to, double where, double step, double below) {
+      std::vector<double> out;
+      const auto          fill = [&](double lower, double upper) {
+        const unsigned int k = std::max(1., std::round((upper - lower) / h));
+        out.insert(out.end(), k, (upper - lower) / k);
+      };
+      fill(from, where - below);
+      out.push_back(step);
+      fill(where - below + step, to);
+      return out;
+    };
+    dealii::Triangulation<2> tria;
+    dealii::GridGenerator::subdivided_hyper_rectangle(tria, {steps(0., 1., a, h, 0.37 * h), steps(-2., 2., 0., thin, at * thin)},
+                                                      dealii::Point<2>(0., -2.), dealii::Point<2>(1., 2.), true);
+    return solve(tria, {{0., -2., 1., 2.}, {}}, {{0., 0.}, {a, 0.}}, {1., -2.}, {1., 2.}, true, 0.15, 1.);
+  }
+
   /// Inclined crack of half-length 0.5 at angle beta through the origin of [-10, 10]^2 on the
   /// 20 x 20 mesh stretched by x' = x + 0.31 cos(pi x / 20), y' = y + 0.17 cos(pi y / 20), refined
   /// `levels` times within `radius` of the origin and then 3 times within 0.15 of each tip (the
@@ -213,4 +237,25 @@ TEST(GlobalSif, InclinedCentreCrackMatchesInfinitePlate)
         }
     }
   worst_inclined = worst;
+}
+
+// Issue 45 point 6: a row of sliver cells along the crack (aspect ratio 1e3 with the crack just
+// where its upper nodes' supports are cut below min_cut_fraction of their area; 1e4, where both
+// rows' are) keeps K_I: within the 1 % of the SENT cases above of Tada's value, and within 0.5 % of
+// the same mesh without the sliver (aspect ratio 1). Heaviside blocks dropped by area alone left
+// these cells to hold the crack shut (K_I 86 % low).
+TEST(GlobalSif, SliverRowAlongTheCrackKeepsK)
+{
+  const double s = 0.5, k_ref = std::sqrt(pi * s) * sent_geometry_factor(s);
+  const double k_square = sent_with_sliver_row(1., 0.3).sif.at(0).k1;
+  const double barely   = 0.9 * EnrichmentSettings().min_cut_fraction;
+  for (const auto &[aspect, at] : {std::pair<double, double>{1e3, barely * (1e3 + 1.)}, {1e4, 0.3}})
+    {
+      const double k1 = sent_with_sliver_row(aspect, at).sif.at(0).k1;
+      std::cout << "SENT a/W = 0.5, crack row of aspect ratio " << aspect << ", crack at " << at
+                << " of its height: K_I " << k1 << " (rel. err " << k1 / k_ref - 1. << ", against square cells "
+                << k1 / k_square - 1. << ")\n";
+      EXPECT_LT(std::abs(k1 / k_ref - 1.), 0.01) << "aspect ratio " << aspect;
+      EXPECT_LT(std::abs(k1 / k_square - 1.), 0.005) << "aspect ratio " << aspect;
+    }
 }
