@@ -1,6 +1,7 @@
 #include "csv.h"
 
 #include <filesystem>
+#include <limits>
 
 #include "error.h"
 
@@ -53,5 +54,10 @@ namespace pumpd
           }
       }
     return rows;
+  }
+
+  double csv_number(const std::string &field)
+  {
+    return field.empty() ? std::numeric_limits<double>::quiet_NaN() : std::stod(field);
   }
 } // namespace pumpd
