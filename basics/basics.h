@@ -1,6 +1,7 @@
 // pumpd_basics: what global/ and local/ share, knowing neither PD nor deal.II (DESIGN.md).
 //
 //   geometry.h  points, boxes, circles, polylines, segment tests
+//   segment_tree.h  a bounding-box hierarchy over a polyline's segments: the nearest segment
 //   body.h      the body of a specimen: outline and holes as curves of segments and arcs, built
 //               from a mesh's boundary edges; containment, clearance, bond and ray tests
 //   error.h     InvalidParameter (names the parameter and its allowed range), NonFiniteState
@@ -25,6 +26,7 @@
 #include "lefm.h"
 #include "memory.h"
 #include "program.h"
+#include "segment_tree.h"
 #include "pvd.h"
 #include "text.h"
 #include "vtu.h"

@@ -1,20 +1,31 @@
 #include "csv.h"
 
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <limits>
 
 #include "error.h"
+#include "output.h"
 
 namespace pumpd
 {
-  CsvFile::CsvFile(const std::string &path, const std::string &header, bool append)
+  CsvFile::CsvFile(const std::string &file, const std::string &header, bool append)
+    : path(file)
   {
+    claim_output_directory(std::filesystem::path(path).parent_path().string());
     const bool exists = append && std::filesystem::exists(path);
+    errno             = 0;
     out.open(path, exists ? std::ios::app : std::ios::trunc);
     if (!out)
-      throw InvalidParameter("Output directory", path, "cannot be written");
+      throw InvalidParameter("Output directory", path,
+                             std::string("cannot be written (") +
+                               (errno != 0 ? std::strerror(errno) : "the system gave no cause") + ")");
     if (!exists)
-      out << header << "\n";
+      {
+        out << header;
+        end_row();
+      }
   }
 
   void CsvFile::row(const std::vector<std::string> &cells)
@@ -23,8 +34,20 @@ namespace pumpd
       return;
     for (std::size_t c = 0; c < cells.size(); ++c)
       out << (c ? "," : "") << cells[c];
+    end_row();
+  }
+
+  void CsvFile::end_row()
+  {
+    errno = 0;
     out << "\n";
     out.flush();
+    if (!out)
+      {
+        const int error = errno;
+        out.close();
+        write_failed(path, error);
+      }
   }
 
   std::vector<CsvRow> read_csv_rows(const std::string &file)

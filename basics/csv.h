@@ -1,6 +1,7 @@
 // The one CSV writer of pumpd's results (crack paths, load steps, load-displacement, the study's
 // tables): a header, then one row per call, flushed at once so that a long run's progress is on
-// disk line by line; and the reader of such files.
+// disk line by line (a row that cannot be written stops the run: output.h); and the reader of
+// such files.
 #pragma once
 
 #include <cmath>
@@ -30,8 +31,7 @@ namespace pumpd
         return;
       bool first = true;
       ((out << (first ? "" : ","), field(values), first = false), ...);
-      out << "\n";
-      out.flush();
+      end_row();
     }
     /// One row of cells, as they are.
     void row(const std::vector<std::string> &cells);
@@ -48,6 +48,10 @@ namespace pumpd
       out << std::setprecision(10) << value;
     }
 
+    /// Ends the row and flushes it; throws as write_failed (output.h) if it did not reach the file.
+    void end_row();
+
+    std::string   path;
     std::ofstream out;
   };
 

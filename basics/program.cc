@@ -13,6 +13,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <stdexcept>
 #include <thread>
 
@@ -23,7 +24,75 @@ extern char **environ;
 
 namespace pumpd
 {
-  ProgramRun run_program(const std::vector<std::string> &argv, const std::string &log, double time_limit)
+  namespace
+  {
+    constexpr int passed_on[] = {SIGINT, SIGTERM, SIGHUP};
+
+    // What the handler passes signals on to (a process, or -a process group; 0: none yet) and the
+    // last signal it received.
+    volatile std::sig_atomic_t waited_for = 0, received = 0;
+
+    void pass_on(int signal)
+    {
+      received = signal;
+      if (const pid_t target = waited_for; target != 0)
+        ::kill(target, signal);
+    }
+
+    /// While it lives, SIGINT, SIGTERM and SIGHUP are caught and passed on to the program waited for;
+    /// a signal that was ignored stays ignored. The handler does not restart an interrupted wait.
+    class PassingOnSignals
+    {
+    public:
+      PassingOnSignals()
+      {
+        received = 0;
+        struct sigaction handler = {};
+        handler.sa_handler       = pass_on;
+        sigemptyset(&handler.sa_mask);
+        for (std::size_t k = 0; k < std::size(passed_on); ++k)
+          {
+            ::sigaction(passed_on[k], nullptr, &saved[k]);
+            if (saved[k].sa_handler != SIG_IGN)
+              ::sigaction(passed_on[k], &handler, nullptr);
+          }
+      }
+      ~PassingOnSignals()
+      {
+        waited_for = 0;
+        for (std::size_t k = 0; k < std::size(passed_on); ++k)
+          ::sigaction(passed_on[k], &saved[k], nullptr);
+      }
+      PassingOnSignals(const PassingOnSignals &)            = delete;
+      PassingOnSignals &operator=(const PassingOnSignals &) = delete;
+
+      /// From now on signals go to `target`; one that came before it started goes now.
+      void pass_to(pid_t target)
+      {
+        waited_for = target;
+        if (const int signal = received; signal != 0)
+          ::kill(target, signal);
+      }
+      int signal() const { return received; }
+
+    private:
+      struct sigaction saved[std::size(passed_on)] = {};
+    };
+
+    std::string signal_name(int signal)
+    {
+      return signal == SIGINT ? "SIGINT" : signal == SIGTERM ? "SIGTERM" : signal == SIGHUP ? "SIGHUP"
+                                                                                               : "signal " + std::to_string(signal);
+    }
+  } // namespace
+
+  std::string Interrupted::what() const
+  {
+    return signal_name(signal) + " while waiting for " + program + " (passed on to it; it has ended)";
+  }
+
+  ProgramRun run_program(const std::vector<std::string> &argv, const std::string &log, double time_limit,
+                         const Heartbeat &heartbeat)
   {
     std::vector<char *> args;
     for (const auto &a : argv)
@@ -43,45 +112,63 @@ namespace pumpd
     // what it started (a wrapper script's gmsh).
     posix_spawnattr_t attributes;
     posix_spawnattr_init(&attributes);
-    if (time_limit > 0.)
+    const bool own_group = time_limit > 0.;
+    if (own_group)
       {
         posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
         posix_spawnattr_setpgroup(&attributes, 0);
       }
-    pid_t      pid = 0;
-    ProgramRun run;
+    PassingOnSignals       signals;
+    pid_t                  pid = 0;
+    ProgramRun             run;
     run.start_error = posix_spawnp(&pid, args[0], &actions, &attributes, args.data(), environ);
     posix_spawnattr_destroy(&attributes);
     posix_spawn_file_actions_destroy(&actions);
     ::close(out);
     if (run.start_error != 0)
-      return run;
+      {
+        if (signals.signal() != 0)
+          throw Interrupted{signals.signal(), argv[0]};
+        return run;
+      }
+    signals.pass_to(own_group ? -pid : pid);
 
-    int    status = 0;
-    rusage usage{};
+    int        status = 0;
+    rusage     usage{};
     const auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count(); };
-    bool killed = false;
+    const bool polling = time_limit > 0. || heartbeat.interval > 0.;
+    double     next_beat = heartbeat.interval;
+    bool       killed    = false;
     for (;;)
       {
-        const pid_t done = ::wait4(pid, &status, time_limit > 0. ? WNOHANG : 0, &usage);
+        const pid_t done = ::wait4(pid, &status, polling ? WNOHANG : 0, &usage);
         if (done == pid)
           break;
         if (done < 0 && errno != EINTR)
           throw std::runtime_error("waiting for " + argv[0] + " failed: " + std::strerror(errno));
-        if (done == 0 && elapsed() > time_limit)
+        if (done != 0)
+          continue;
+        const double t = elapsed();
+        if (time_limit > 0. && t > time_limit)
           {
             ::kill(-pid, SIGKILL);
             killed     = true;
-            time_limit = 0.; // the next wait blocks until the kill is reaped
+            time_limit = 0.;
           }
-        else if (done == 0)
-          std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        if (heartbeat.interval > 0. && t >= next_beat)
+          {
+            heartbeat.tick(t);
+            next_beat += heartbeat.interval;
+          }
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
       }
+    if (signals.signal() != 0)
+      throw Interrupted{signals.signal(), argv[0]};
     if (WIFEXITED(status))
       run.exit_code = WEXITSTATUS(status);
     if (WIFSIGNALED(status))
       run.signal = WTERMSIG(status);
-    run.timed_out = killed && run.signal == SIGKILL;
+    run.timed_out   = killed && run.signal == SIGKILL;
     run.seconds     = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     run.peak_memory = double(usage.ru_maxrss) / 1024.; // kB on Linux
     return run;

@@ -2,9 +2,12 @@
 
 #include <cmath>
 #include <cstring>
-#include <fstream>
+#include <filesystem>
+#include <ostream>
 #include <limits>
 #include <stdexcept>
+
+#include "output.h"
 
 namespace pumpd
 {
@@ -39,7 +42,7 @@ namespace pumpd
 
     /// One DataArray: its byte count and its values, base64-encoded apart (as VTK reads them).
     template <class T>
-    void data_array(std::ofstream &out, const std::string &attributes, const std::vector<T> &values)
+    void data_array(std::ostream &out, const std::string &attributes, const std::vector<T> &values)
     {
       if (values.size() * sizeof(T) > std::numeric_limits<std::uint32_t>::max())
         throw std::runtime_error("VTU array of " + std::to_string(values.size() * sizeof(T)) +
@@ -63,7 +66,7 @@ namespace pumpd
                                    " is not an Int32");
     }
 
-    void field(std::ofstream &out, const VtuField &f)
+    void field(std::ostream &out, const VtuField &f)
     {
       const std::string attributes =
         "Name=\"" + f.name + "\" NumberOfComponents=\"" + std::to_string(f.components) + "\"";
@@ -80,6 +83,38 @@ namespace pumpd
       std::memcpy(&first, &one, 1);
       return first == 1;
     }
+
+    /// The file's text: the grid's points, cells and fields.
+    void write_grid(std::ostream &out, const VtuGrid &grid)
+    {
+      const std::size_t n_points = grid.n_points();
+      out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\""
+          << (little_endian() ? "LittleEndian" : "BigEndian") << "\" header_type=\"UInt32\">\n<UnstructuredGrid>\n"
+          << "<Piece NumberOfPoints=\"" << n_points << "\" NumberOfCells=\"" << grid.types.size() << "\">\n<Points>\n";
+      std::vector<double> xyz(3 * n_points, 0.);
+      for (std::size_t p = 0; p < n_points; ++p)
+        {
+          xyz[3 * p]     = grid.points[2 * p];
+          xyz[3 * p + 1] = grid.points[2 * p + 1];
+        }
+      data_array(out, "type=\"Float64\" NumberOfComponents=\"3\"", xyz);
+      out << "</Points>\n<Cells>\n";
+      data_array(out, "type=\"Int64\" Name=\"connectivity\"", grid.connectivity);
+      data_array(out, "type=\"Int64\" Name=\"offsets\"", grid.offsets);
+      data_array(out, "type=\"UInt8\" Name=\"types\"", grid.types);
+      out << "</Cells>\n<PointData";
+      if (!grid.active_scalars.empty())
+        out << " Scalars=\"" << grid.active_scalars << "\"";
+      if (!grid.active_vectors.empty())
+        out << " Vectors=\"" << grid.active_vectors << "\"";
+      out << ">\n";
+      for (const auto &f : grid.point_data)
+        field(out, f);
+      out << "</PointData>\n<CellData>\n";
+      for (const auto &f : grid.cell_data)
+        field(out, f);
+      out << "</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+    }
   } // namespace
 
   void VtuGrid::add_cell(std::int64_t first, unsigned int corners, std::uint8_t type)
@@ -90,43 +125,24 @@ namespace pumpd
     types.push_back(type);
   }
 
+  double vtu_bytes(double points, double cells, unsigned int corners, unsigned int point_values,
+                   unsigned int cell_values, unsigned int cell_integers)
+  {
+    // Per point x, y, z and its Float64 values; per cell its connectivity and offset (Int64), its
+    // type (UInt8) and its values; base64 writes 4 characters per 3 bytes.
+    const double raw = points * 8. * (3. + point_values) + cells * (8. * (corners + 1.) + 1. + 8. * cell_values +
+                                                                      4. * cell_integers);
+    return 4. / 3. * raw;
+  }
+
   void write_vtu(const std::string &path, const VtuGrid &grid)
   {
-    const std::size_t n_points = grid.n_points(), n_cells = grid.types.size();
     for (const auto &f : grid.point_data)
-      check(f, n_points, "point");
+      check(f, grid.n_points(), "point");
     for (const auto &f : grid.cell_data)
-      check(f, n_cells, "cell");
-    std::ofstream out(path);
-    if (!out)
-      throw std::runtime_error("cannot write " + path);
-    out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\" byte_order=\""
-        << (little_endian() ? "LittleEndian" : "BigEndian") << "\" header_type=\"UInt32\">\n<UnstructuredGrid>\n"
-        << "<Piece NumberOfPoints=\"" << n_points << "\" NumberOfCells=\"" << n_cells << "\">\n<Points>\n";
-    std::vector<double> xyz(3 * n_points, 0.);
-    for (std::size_t p = 0; p < n_points; ++p)
-      {
-        xyz[3 * p]     = grid.points[2 * p];
-        xyz[3 * p + 1] = grid.points[2 * p + 1];
-      }
-    data_array(out, "type=\"Float64\" NumberOfComponents=\"3\"", xyz);
-    out << "</Points>\n<Cells>\n";
-    data_array(out, "type=\"Int64\" Name=\"connectivity\"", grid.connectivity);
-    data_array(out, "type=\"Int64\" Name=\"offsets\"", grid.offsets);
-    data_array(out, "type=\"UInt8\" Name=\"types\"", grid.types);
-    out << "</Cells>\n<PointData";
-    if (!grid.active_scalars.empty())
-      out << " Scalars=\"" << grid.active_scalars << "\"";
-    if (!grid.active_vectors.empty())
-      out << " Vectors=\"" << grid.active_vectors << "\"";
-    out << ">\n";
-    for (const auto &f : grid.point_data)
-      field(out, f);
-    out << "</PointData>\n<CellData>\n";
-    for (const auto &f : grid.cell_data)
-      field(out, f);
-    out << "</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
-    if (!out)
-      throw std::runtime_error("error while writing " + path);
+      check(f, grid.types.size(), "cell");
+    claim_output_directory(std::filesystem::path(path).parent_path().string());
+    // Written aside and renamed when complete: a failed write leaves no truncated file behind.
+    write_aside(path, [&](std::ostream &out) { write_grid(out, grid); });
   }
 } // namespace pumpd

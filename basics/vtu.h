@@ -33,8 +33,15 @@ namespace pumpd
     void add_cell(std::int64_t first, unsigned int corners, std::uint8_t type);
   };
 
-  /// Writes the grid to `path`. Throws std::logic_error, before the file is opened, for a field
-  /// without components, of a length that does not match its points or cells, or integer with a
-  /// value that is not an Int32; std::runtime_error if the file cannot be written.
+  /// Writes the grid to `path` (aside, renamed when complete: output.h). Throws std::logic_error,
+  /// before the file is opened, for a field without components, of a length that does not match
+  /// its points or cells, or integer with a value that is not an Int32; std::runtime_error naming
+  /// the file and the cause if it cannot be written.
   void write_vtu(const std::string &path, const VtuGrid &grid);
+
+  /// The size of the file write_vtu writes for a grid of `points` points and `cells` cells of
+  /// `corners` corners each, with `point_values` Float64 values per point and `cell_values`
+  /// Float64 and `cell_integers` Int32 values per cell, its XML text aside [bytes].
+  double vtu_bytes(double points, double cells, unsigned int corners, unsigned int point_values,
+                   unsigned int cell_values, unsigned int cell_integers);
 } // namespace pumpd

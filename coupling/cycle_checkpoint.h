@@ -2,13 +2,17 @@
 // interrupted run resumes where it stopped. The PD boxes are rebuilt at every exchange from the
 // crack polylines, so the cracks, the counters, the refinements of the global mesh (tip positions
 // and levels: the same mesh on resume) and, per end of each crack, its tip's boxes, accepted load,
-// last box's horizon and whether it stopped are the whole state, with the fingerprint of the scene
-// that wrote it.
+// last box's horizon and whether it stopped are the whole state, with what makes the scene that
+// wrote it (the fingerprint of its geometry, the entries of its scene file that change results),
+// the length of every file the run appends to when the state was written (a resumed run cuts them
+// back to it: recorder.h), and a checksum (FNV-1a) of all of it: a damaged file is refused.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "geometry.h"
@@ -33,10 +37,15 @@ namespace pumpd::coupling
     std::vector<geometry::Polyline> cracks;
     std::vector<Refinement>         refinements; ///< of every global solve so far
     std::vector<TipEndState>        ends; ///< 2 c + e: crack c's tip at its first (e = 0) or last vertex
+    /// The scene file's entries that change results: path ("Scene/Material/Young's modulus") and value.
+    std::vector<std::pair<std::string, std::string>> entries;
+    std::map<std::string, std::uint64_t>             outputs; ///< Recorder::lengths() (recorder.h)
   };
 
-  /// Throws std::runtime_error if the file cannot be written.
+  /// Writes aside and renames (an interruption never leaves half a checkpoint). Throws
+  /// std::runtime_error naming the file and the cause if it cannot be written.
   void write_cycle_checkpoint(const std::string &path, const CycleState &state);
-  /// Throws std::runtime_error if the file is missing or not a cycle checkpoint.
+  /// Throws std::runtime_error naming the file if it is missing, not a cycle checkpoint, or its
+  /// contents do not match their checksum.
   CycleState read_cycle_checkpoint(const std::string &path);
 } // namespace pumpd::coupling

@@ -261,21 +261,61 @@ namespace pumpd::coupling
       return enriched_cracks(polylines, scene);
     }
 
-    /// A new run's state, or with `resume` the one in the output directory's checkpoint.h5, which
-    /// the same scene must have written.
-    CycleState starting_state(const Scene &scene, bool resume)
+    /// The scene file's entries that change the cycle's results: every entry of the sections it
+    /// reads but those that only extend a run (Maximum exchanges, Maximum crack length), say how
+    /// often or where it writes (Output interval, Output directory), Resume itself, and the mesh
+    /// file's name (its cells and vertices are in the geometry fingerprint).
+    std::vector<std::pair<std::string, std::string>> results_entries(const ParameterTable &file)
+    {
+      const std::vector<std::string> read = {"Method/",        "Scene/",      "Global/",     "Peridynamics/",
+                                             "Crack growth/", "Initiation/", "Global-local/"};
+      const std::vector<std::string> left_out = {
+        "Global-local/Maximum exchanges", "Crack growth/Maximum crack length", "Global-local/Output interval",
+        "Scene/Output directory",         "Global-local/Resume",               "Scene/Mesh file"};
+      std::vector<std::pair<std::string, std::string>> entries;
+      for (const auto &[path, value] : file.all())
+        if (std::any_of(read.begin(), read.end(), [&](const auto &s) { return path.rfind(s, 0) == 0; }) &&
+            std::find(left_out.begin(), left_out.end(), path) == left_out.end())
+          entries.emplace_back(path, value);
+      return entries;
+    }
+
+    /// "" if the two lists of entries agree, else the first entry that differs: in the
+    /// checkpoint's run (`then`) against this one (`now`).
+    std::string first_difference(const std::vector<std::pair<std::string, std::string>> &then,
+                                 const std::vector<std::pair<std::string, std::string>> &now)
+    {
+      const auto value_in = [](const auto &entries, const std::string &path) -> std::optional<std::string> {
+        for (const auto &[p, v] : entries)
+          if (p == path)
+            return v;
+        return std::nullopt;
+      };
+      const auto shown = [](const std::optional<std::string> &v) { return v ? *v : std::string("(no such entry)"); };
+      for (const auto *entries : {&then, &now})
+        for (const auto &[path, value] : *entries)
+          if (const auto a = value_in(then, path), b = value_in(now, path); a != b)
+            return path + " = " + shown(a) + " there, " + shown(b) + " here";
+      return "";
+    }
+
+    /// A new run's state, or with Resume the one in the output directory's checkpoint.h5, which
+    /// the same scene must have written: the same geometry and the same entries that change results.
+    CycleState starting_state(const Scene &scene, const CycleSettings &settings)
     {
       const std::uint64_t fingerprint = geometry_fingerprint(scene);
       CycleState          state;
-      state.scene = fingerprint;
-      if (!resume)
+      state.scene   = fingerprint;
+      state.entries = results_entries(settings.scene_file);
+      if (!settings.resume)
         return state;
       if (scene.output_directory.empty())
         throw InvalidParameter("Resume", "true", "needs an output directory holding checkpoint.h5");
       const std::string checkpoint = scene.output_directory + "/checkpoint.h5";
+      CycleState        saved;
       try
         {
-          state = read_cycle_checkpoint(checkpoint);
+          saved = read_cycle_checkpoint(checkpoint);
         }
       catch (const std::runtime_error &e)
         {
@@ -283,11 +323,15 @@ namespace pumpd::coupling
                                  std::string(e.what()) + " (needs the checkpoint.h5 a global-local run of this "
                                                          "scene wrote in its output directory)");
         }
-      if (state.scene != fingerprint)
+      const std::string resume_it = ": resume the scene that wrote it, or set Resume = false";
+      if (const std::string entry = first_difference(saved.entries, state.entries); !entry.empty())
+        throw InvalidParameter("Resume", "true",
+                               checkpoint + " was written by a run of another scene (" + entry + ")" + resume_it);
+      if (saved.scene != fingerprint)
         throw InvalidParameter("Resume", "true",
                                checkpoint + " was written by a run of another scene (its mesh or initial cracks "
-                                            "differ): resume the scene that wrote it, or set Resume = false");
-      return state;
+                                            "differ)" + resume_it);
+      return saved;
     }
 
     Cycle::Cycle(const Scene &sc, const GlobalLocalSettings &settings, std::ostream &progress)
@@ -300,8 +344,8 @@ namespace pumpd::coupling
       , cracks(the_cracks(sc.cracks, sc))
       , global(sc, settings.global)
       , tracks(2 * sc.cracks.size(), TipTrack(sc, settings))
-      , state(starting_state(sc, settings.cycle.resume))
-      , recorder(sc, settings.cycle.resume)
+      , state(starting_state(sc, settings.cycle))
+      , recorder(sc, settings.cycle.resume ? std::optional(state.outputs) : std::nullopt)
       , checkpoint(recorder.writes() ? recorder.path("checkpoint.h5") : "")
     {
       if (s.cycle.exchange.min_advance < 2. * h)
@@ -335,6 +379,8 @@ namespace pumpd::coupling
               tracks[e].boxes.restore(saved.boxes, tracks[e].length_scale());
               tracks[e].controller.restore(saved.load_factor);
             }
+          // As the checkpoint has them: the run may have stopped after writing later ones.
+          recorder.crack_paths(polylines());
           out << "resuming after exchange " << state.exchanges << ": cracks " << crack_length() << " m\n";
         }
       steps   = recorder.table("load_steps.csv", load_steps_header);
@@ -808,6 +854,7 @@ namespace pumpd::coupling
                                tracks[e].stopped};
             }
           state.refinements = global.refinements();
+          state.outputs     = recorder.lengths();
           write_cycle_checkpoint(checkpoint, state);
         }
 

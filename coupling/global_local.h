@@ -37,6 +37,7 @@
 #include "exchange_controller.h"
 #include "global_problem.h"
 #include "growth_settings.h"
+#include "parameter_table.h"
 #include "pd_settings.h"
 #include "resolution.h"
 #include "scene.h"
@@ -59,6 +60,9 @@ namespace pumpd::coupling
     double           reference_box_area = 0.02258; ///< the fixed box of Ni et al. 2019 [m^2], for a metric
     unsigned int     output_interval    = 1;       ///< global and PD VTU every n exchanges
     bool             resume             = false;
+    /// Every entry of the scene file read (read_parameters; none for settings made in code): a
+    /// checkpoint keeps those that change results, and a resume must find them unchanged.
+    ParameterTable scene_file;
 
     void add_parameters(dealii::ParameterHandler &prm);
   };

@@ -86,7 +86,7 @@ namespace pumpd::coupling
         }
   }
 
-  void check_refinement(const Scene &scene, const GlobalSettings &settings, double max_cells)
+  double estimated_cells(const Scene &scene, const GlobalSettings &settings)
   {
     double area = scene.body.outline().area();
     for (const auto &hole : scene.body.holes())
@@ -99,7 +99,13 @@ namespace pumpd::coupling
       tips += crack.tips().size();
     const double refined =
       std::min(area, double(std::max<std::size_t>(tips, 1)) * (pi * r * r + 2. * r * settings.refinement_trail));
-    const double estimated = cells + cells * refined / area * (std::pow(4., settings.refinement_levels) - 1.);
+    return cells + cells * refined / area * (std::pow(4., settings.refinement_levels) - 1.);
+  }
+
+  void check_refinement(const Scene &scene, const GlobalSettings &settings, double max_cells)
+  {
+    const double      r         = settings.refinement_radius;
+    const double      estimated = estimated_cells(scene, settings);
     const std::string name = "Refinement levels near the tip", value = std::to_string(settings.refinement_levels);
     const std::string what = "with Refinement radius = " + to_text(r) + " m and Refinement trail = " +
                              to_text(settings.refinement_trail) + " m the mesh would have about " +

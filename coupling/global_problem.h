@@ -55,10 +55,12 @@ namespace pumpd::coupling
   /// (global::unresolved_tip_separation).
   void check_tip_radius(const Scene &scene, const GlobalSettings &settings);
 
-  /// Refuses refinement settings whose refined mesh would exceed `max_cells` (Scene / Maximum
-  /// cells) or this machine's memory (global::check_memory): the cells of the mean size within the
-  /// refinement radius of each initial tip (one if there is none) and its trail, each split into
-  /// 4^levels.
+  /// The active cells of the refined mesh: the cells of the mean size within the refinement
+  /// radius of each initial tip (one if there is none) and its trail, each split into 4^levels.
+  double estimated_cells(const Scene &scene, const GlobalSettings &settings);
+
+  /// Refuses refinement settings whose refined mesh (estimated_cells) would exceed `max_cells`
+  /// (Scene / Maximum cells) or this machine's memory (global::check_memory).
   void check_refinement(const Scene &scene, const GlobalSettings &settings, double max_cells);
 
   /// A crack tip under the scene's loading.

@@ -9,6 +9,7 @@
 #include <deal.II/base/multithread_info.h>
 #include <deal.II/base/parameter_handler.h>
 
+#include <csignal>
 #include <cstdlib>
 #include <iostream>
 #include <optional>
@@ -98,6 +99,15 @@ int main(int argc, char **argv)
           pumpd::coupling::run(p, std::cout);
         }
       return 0;
+    }
+  catch (const pumpd::Interrupted &interrupted)
+    {
+      // One line, then the end the signal would have given (the shell sees 128 + signal).
+      std::cout.flush();
+      std::cerr << "pumpd: stopped in " << file << ": " << interrupted.what() << std::endl;
+      std::signal(interrupted.signal, SIG_DFL);
+      std::raise(interrupted.signal);
+      return 128 + interrupted.signal;
     }
   catch (const dealii::ExceptionBase &e)
     {

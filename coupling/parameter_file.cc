@@ -1,5 +1,7 @@
 #include "parameter_file.h"
 
+#include <deal.II/base/parameter_handler.h>
+
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
@@ -54,13 +56,29 @@ namespace pumpd::coupling
       return {};
     }
 
+    const std::string byte_order_mark = "\xEF\xBB\xBF";
+
+    /// The text of a scene file without the byte order mark it may start with.
+    std::string without_byte_order_mark(const std::string &text)
+    {
+      return text.rfind(byte_order_mark, 0) == 0 ? text.substr(byte_order_mark.size()) : text;
+    }
+
     void check(const std::string &file, std::vector<std::string> &stack)
     {
-      const auto text = file_contents(file);
+      const std::string name = stack.empty() ? "scene file" : "include";
+      const std::string what = " (the path of a .prm file, relative to the working directory)";
+      if (const auto kind = special_file_kind(file); !kind.empty())
+        throw InvalidParameter(name, file, "is " + kind + ", not a regular file" + what);
+      auto text = file_contents(file);
       if (!text)
-        throw InvalidParameter(stack.empty() ? "scene file" : "include", file,
-                               "not found, or not a readable regular file (the path of a .prm file, relative to "
-                               "the working directory)");
+        throw InvalidParameter(name, file, "not found, or not a readable regular file" + what);
+      // deal.II reads an included file itself, and would take the mark for part of its first line.
+      if (!stack.empty() && text->rfind(byte_order_mark, 0) == 0)
+        throw InvalidParameter(name, file,
+                               "starts with a UTF-8 byte order mark (the bytes EF BB BF), which deal.II cannot read "
+                               "in an included file: save it as UTF-8 without a byte order mark");
+      text = without_byte_order_mark(*text);
       const auto canonical = std::filesystem::weakly_canonical(file).string();
       for (const auto &open : stack)
         if (open == canonical)
@@ -101,5 +119,18 @@ namespace pumpd::coupling
   {
     std::vector<std::string> stack;
     check(file, stack);
+  }
+
+  void parse_parameter_file(dealii::ParameterHandler &prm, const std::string &file)
+  {
+    check_parameter_file(file);
+    const std::string text = file_contents(file).value_or("");
+    if (text.rfind(byte_order_mark, 0) == 0)
+      {
+        std::istringstream in(without_byte_order_mark(text));
+        prm.parse_input(in, file);
+      }
+    else
+      prm.parse_input(file);
   }
 } // namespace pumpd::coupling

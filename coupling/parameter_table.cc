@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "parameter_file.h"
 #include "parameters.h"
 #include "text.h"
 
@@ -21,7 +22,12 @@ namespace pumpd::coupling
     Parameters               p;
     dealii::ParameterHandler prm;
     p.add_parameters(prm);
-    prm.parse_input(file);
+    parse_parameter_file(prm, file);
+    return of_handler(prm);
+  }
+
+  ParameterTable ParameterTable::of_handler(const dealii::ParameterHandler &prm)
+  {
     std::stringstream printed;
     prm.print_parameters(printed, dealii::ParameterHandler::ShortPRM);
 

@@ -7,6 +7,11 @@
 #include <utility>
 #include <vector>
 
+namespace dealii
+{
+  class ParameterHandler;
+}
+
 namespace pumpd::coupling
 {
   class ParameterTable
@@ -15,6 +20,8 @@ namespace pumpd::coupling
     /// The parameters of a scene file after reading it (deal.II's exceptions for a malformed file,
     /// an unknown entry or a value outside its pattern, as read_parameters).
     static ParameterTable of_file(const std::string &file);
+    /// The parameters `prm` holds (Parameters::add_parameters declared them) after reading a file.
+    static ParameterTable of_handler(const dealii::ParameterHandler &prm);
 
     /// The value of the entry at `path` (std::out_of_range if there is none).
     const std::string &get(const std::string &path) const;
@@ -22,6 +29,8 @@ namespace pumpd::coupling
     /// The paths whose last part is `name` and whose first is one of `sections`.
     std::vector<std::string> find(const std::string &name, const std::vector<std::string> &sections) const;
     bool                     has(const std::string &path) const;
+    /// Every entry: path and value.
+    const std::vector<std::pair<std::string, std::string>> &all() const { return entries; }
 
     /// A scene file setting every entry but those of the section `omitted`.
     std::string text(const std::string &omitted) const;

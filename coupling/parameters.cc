@@ -8,7 +8,9 @@
 
 #include "error.h"
 #include "nucleation.h"
+#include "output_volume.h"
 #include "parameter_file.h"
+#include "parameter_table.h"
 
 namespace pumpd::coupling
 {
@@ -41,8 +43,8 @@ namespace pumpd::coupling
     Parameters               p;
     dealii::ParameterHandler prm;
     p.add_parameters(prm);
-    check_parameter_file(file);
-    prm.parse_input(file);
+    parse_parameter_file(prm, file);
+    p.cycle.scene_file = ParameterTable::of_handler(prm);
     return p;
   }
 
@@ -52,6 +54,7 @@ namespace pumpd::coupling
     dealii::ParameterHandler prm;
     p.add_parameters(prm);
     prm.parse_input_from_string(text);
+    p.cycle.scene_file = ParameterTable::of_handler(prm);
     return p;
   }
 
@@ -67,6 +70,7 @@ namespace pumpd::coupling
         check_tip_radius(scene, p.global);
         check_refinement(scene, p.global, p.scene.max_cells);
       }
+    check_output_volume(p, &scene, p.scene.output_directory);
   }
 
   void run(const Parameters &p, std::ostream &out)
@@ -74,12 +78,13 @@ namespace pumpd::coupling
     make_output_directory("Scene / Output directory", p.scene.output_directory);
     if (p.method == "pd-edge-crack")
       {
+        check_output_volume(p, nullptr, p.scene.output_directory);
         const auto r = run_edge_crack({p.pd.material(p.scene.material), p.pd, p.edge_crack, p.scene.output_directory}, out);
         out << "crack growth onset at K/K_c = " << r.onset_k_over_kc << "; grown crack within "
             << r.max_offset / r.spacing << " h of the symmetry line\n";
         return;
       }
-    const Scene scene = build_scene(p.scene);
+    const Scene scene = build_scene(p.scene, &out);
     check_against_scene(p, scene);
     if (scene.cracks.empty() && p.method == "global-local")
       run_global_local_from_initiation(scene, p.global_local_settings(), p.initiation, out);

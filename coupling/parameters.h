@@ -58,8 +58,8 @@ namespace pumpd::coupling
 
   /// The checks of the settings against the built scene that no single section can make (the
   /// hole margin against the body, the tip enrichment radius against the boundary, the refined
-  /// mesh against Maximum cells): InvalidParameter naming the entry. run() and a study's planning
-  /// call it.
+  /// mesh against Maximum cells, the output against the free disk: output_volume.h):
+  /// InvalidParameter naming the entry. run() and a study's planning call it.
   void check_against_scene(const Parameters &parameters, const Scene &scene);
 
   /// Runs the method on the scene: builds the scene from the mesh, then calls run_lefm_growth,

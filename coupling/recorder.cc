@@ -2,7 +2,9 @@
 
 #include <filesystem>
 
+#include "error.h"
 #include "global_problem.h"
+#include "output.h"
 #include "vtu_output.h"
 
 namespace pumpd::coupling
@@ -36,26 +38,82 @@ namespace pumpd::coupling
       for (const auto &f : scene.conditions.forces)
         points(f.place);
     }
+
+    [[noreturn]] void refuse_resume(const std::string &file, const std::string &what)
+    {
+      throw InvalidParameter("Resume", "true",
+                             file + " " + what +
+                               ": the output directory does not hold what the run that wrote its checkpoint wrote; "
+                               "set Resume = false to start anew");
+    }
   } // namespace
 
-  Recorder::Recorder(const Scene &scene, bool resume_run)
+  Recorder::Recorder(const Scene &scene, std::optional<OutputLengths> resumed_lengths)
     : directory(scene.output_directory)
-    , resume(resume_run)
+    , resumed(std::move(resumed_lengths))
   {
     if (directory.empty())
       return;
     std::filesystem::create_directories(directory);
+    claim_output_directory(directory);
     write_body(path("body.csv"), scene);
     if (!scene.reference_path.empty())
       write_path(path("reference_path.csv"), scene.reference_path);
     loads = table("load_displacement.csv", "step,lambda,load,displacement,crack_length_m,tip_x_m,tip_y_m");
     global_series = std::make_unique<PvdSeries>(directory, "global");
     pd_series     = std::make_unique<PvdSeries>(directory, "pd");
+    restore(*global_series);
+    restore(*pd_series);
   }
 
-  CsvFile Recorder::table(const std::string &file, const std::string &header) const
+  CsvFile Recorder::table(const std::string &file, const std::string &header)
   {
-    return directory.empty() ? CsvFile() : CsvFile(path(file), header, resume);
+    if (directory.empty())
+      return CsvFile();
+    tables.push_back(file);
+    cut_back(file);
+    return CsvFile(path(file), header, resumed.has_value());
+  }
+
+  OutputLengths Recorder::lengths() const
+  {
+    OutputLengths lengths;
+    if (!writes())
+      return lengths;
+    for (const auto &file : tables)
+      lengths[file] = std::filesystem::file_size(path(file));
+    for (const auto *series : {global_series.get(), pd_series.get()})
+      lengths[std::filesystem::path(series->index()).filename().string()] = series->size();
+    return lengths;
+  }
+
+  void Recorder::cut_back(const std::string &file) const
+  {
+    if (!resumed)
+      return;
+    const auto it = resumed->find(file);
+    if (it == resumed->end())
+      refuse_resume(path(file), "has no length in the checkpoint");
+    std::error_code error;
+    const auto      size = std::filesystem::file_size(path(file), error);
+    if (error || size < it->second)
+      refuse_resume(path(file), "holds " + (error ? std::string("nothing") : std::to_string(size) + " bytes") +
+                                  ", less than the " + std::to_string(it->second) +
+                                  " bytes when the checkpoint was written");
+    std::filesystem::resize_file(path(file), it->second);
+  }
+
+  void Recorder::restore(PvdSeries &series) const
+  {
+    if (!resumed)
+      return;
+    const std::string name = std::filesystem::path(series.index()).filename().string();
+    const auto        it   = resumed->find(name);
+    if (it == resumed->end())
+      refuse_resume(series.index(), "has no length in the checkpoint");
+    if (const auto found = series.restore(it->second); found < it->second)
+      refuse_resume(series.index(), "lists " + std::to_string(found) + " files, fewer than the " +
+                                      std::to_string(it->second) + " when the checkpoint was written");
   }
 
   void Recorder::crack_path(const geometry::Polyline &crack) const

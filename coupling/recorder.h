@@ -6,10 +6,16 @@
 //   load_displacement.csv  the scene's reported load and displacement per accepted step
 //   global.pvd + global_NNN.vtu, pd.pvd + pd_NNN.vtu   ParaView series
 //   <table>.csv            the method's own table (load_steps.csv), row by row
-// Without an output directory nothing is written.
+// Without an output directory nothing is written. A resumed run (the global-local cycle) appends
+// to the tables and series of the interrupted one, each cut back first to its length when the
+// checkpoint was written (lengths()): what the interrupted run wrote after its checkpoint is
+// computed and written again, so the files and the checkpoint agree however the run ended.
 #pragma once
 
+#include <cstdint>
+#include <map>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -22,17 +28,25 @@ namespace pumpd::coupling
 {
   class GlobalProblem;
 
+  /// The length of each file a run appends to, by its name in the output directory: the bytes of
+  /// a table, the entries of a series' index (<name>.pvd).
+  using OutputLengths = std::map<std::string, std::uint64_t>;
+
   class Recorder
   {
   public:
-    /// Creates the scene's output directory and writes body.csv and reference_path.csv;
-    /// `resume` appends to the tables of an interrupted run instead of starting them anew.
-    Recorder(const Scene &scene, bool resume = false);
+    /// Creates the scene's output directory and writes body.csv and reference_path.csv. With
+    /// `resumed` (the lengths an interrupted run's checkpoint recorded) it appends to that run's
+    /// tables and series, each cut back to its length; InvalidParameter naming Resume if one is
+    /// missing or shorter.
+    explicit Recorder(const Scene &scene, std::optional<OutputLengths> resumed = std::nullopt);
 
     bool        writes() const { return !directory.empty(); }
     std::string path(const std::string &file) const { return directory + "/" + file; }
     /// A table of the method's own, appended to when resuming.
-    CsvFile table(const std::string &file, const std::string &header) const;
+    CsvFile table(const std::string &file, const std::string &header);
+    /// The lengths of the tables and series written so far (for a checkpoint).
+    OutputLengths lengths() const;
 
     void crack_path(const geometry::Polyline &crack) const;
     /// crack_path.csv for the first crack, crack_path_<k>.csv for the k-th (k >= 2).
@@ -43,9 +57,15 @@ namespace pumpd::coupling
     void pd_state(const local::PdModel &model, const local::State &s);
 
   private:
-    std::string                directory;
-    bool                       resume;
-    CsvFile                    loads;
+    /// Cuts the table `file` back to its resumed length.
+    void cut_back(const std::string &file) const;
+    /// Continues the series of the interrupted run.
+    void restore(PvdSeries &series) const;
+
+    std::string                  directory;
+    std::optional<OutputLengths> resumed;
+    std::vector<std::string>     tables; ///< the files appended to, by name
+    CsvFile                      loads;
     std::unique_ptr<PvdSeries> global_series, pd_series;
   };
 } // namespace pumpd::coupling

@@ -2,6 +2,7 @@
 
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/quadrature_lib.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/grid_tools_cache.h>
 #include <deal.II/grid/tria.h>
@@ -25,6 +26,7 @@
 #include "error.h"
 #include "hash.h"
 #include "mesh.h"
+#include "output.h"
 #include "path_metrics.h"
 #include "text.h"
 
@@ -146,6 +148,13 @@ namespace pumpd::coupling
       return parts;
     }
 
+    /// A scene text as a message echoes it: whole up to 80 characters, else its start and its
+    /// length, so that the reason after it fits the message's one line (one_line: 300 characters).
+    std::string echoed(const std::string &text)
+    {
+      return text.size() <= 80 ? text : text.substr(0, 60) + "... (" + std::to_string(text.size()) + " characters)";
+    }
+
     /// f(x, y, lambda) of an expression; InvalidParameter(entry, ...) if it does not parse.
     std::function<double(Point, double)> compile(const std::string &expression, const std::string &entry)
     {
@@ -167,13 +176,13 @@ namespace pumpd::coupling
         }
       catch (const std::exception &e)
         {
-          std::string       why = one_line(e.what());
+          std::string       why = e.what();
           const std::string key = "The parser said: ";
           if (const auto k = why.find(key); k != std::string::npos)
             why = why.substr(k + key.size());
-          if (const auto k = why.find(" Stacktrace:"); k != std::string::npos)
+          if (const auto k = why.find("Stacktrace:"); k != std::string::npos)
             why = why.substr(0, k);
-          throw InvalidParameter(entry, expression, "not an expression of x, y and lambda (" + why.substr(0, 200) + ")");
+          throw InvalidParameter(entry, echoed(expression), "not an expression of x, y and lambda (" + one_line(why) + ")");
         }
       return [f](Point x, double lambda) {
         f->set_time(lambda);
@@ -340,38 +349,127 @@ namespace pumpd::coupling
       return out;
     }
 
-    /// The field per unit lambda of an expression, checked to be linear in lambda at the points.
-    conditions::Field linear_field(const std::string &entry, const Parsed &p, const std::string &variable,
-                                   const std::vector<Point> &points)
+    /// A point where a condition's field is checked, and what it is of the place (for a message).
+    struct CheckedPoint
     {
-      const auto f = compile(p.values.at(variable), entry);
-      for (const auto &x : points)
+      Point       x;
+      const char *what;
+    };
+
+    /// The point at (xi, eta) of the unit square in a cell: deal.II's bilinear map of its vertices
+    /// 0 (0, 0), 1 (1, 0), 2 (0, 1), 3 (1, 1).
+    Point in_cell(const dealii::Triangulation<2>::active_cell_iterator &cell, double xi, double eta)
+    {
+      const auto v = [&](unsigned int k) { return Point{cell->vertex(k)[0], cell->vertex(k)[1]}; };
+      return (1. - xi) * (1. - eta) * v(0) + xi * (1. - eta) * v(1) + (1. - xi) * eta * v(2) + xi * eta * v(3);
+    }
+
+    /// Where the methods take a condition's field, beyond its place's vertices: the global problem
+    /// takes a traction at Gauss points of its faces (8 on a face, the rule of its assembly, and
+    /// as many on each part a crack cuts a face into); full PD takes a displacement at lattice
+    /// nodes anywhere in a region's cells, in a band along a boundary's faces, in a disk about a
+    /// point's vertex. No finite set holds all of these; this one holds the vertices, each face's
+    /// midpoint and 8 Gauss points, and the centre, the edge midpoints and 2 x 2 Gauss points of
+    /// each cell PD nodes can lie in (a region's cells; with `pd_nodes` the cells along a boundary
+    /// or about a point): a term that vanishes at every vertex, as one periodic in the cell size
+    /// does, shows there (one of period h/2 vanishes at the midpoints and centres too, not at the
+    /// Gauss points).
+    std::vector<CheckedPoint> checked_points(const conditions::Place &place, const dealii::Triangulation<2> &tria,
+                                             bool pd_nodes)
+    {
+      using Kind = conditions::Place::Kind;
+      std::vector<CheckedPoint> points;
+      for (const Point x : place.points)
+        points.push_back({x, "a vertex"});
+      const auto to_point = [](const dealii::Point<2> &p) { return Point{p[0], p[1]}; };
+      const dealii::QGauss<1> face_rule(8);
+      const dealii::QGauss<2> cell_rule(2);
+      std::vector<bool>       edge_taken(tria.n_raw_faces(), false); // an edge two cells share, once
+      const auto              add_cell = [&](const auto &cell) {
+        points.push_back({to_point(cell->center()), "the centre of a cell"});
+        for (const auto &q : cell_rule.get_points())
+          points.push_back({in_cell(cell, q[0], q[1]), "a Gauss point of a cell"});
+        for (const auto f : cell->face_indices())
+          if (!edge_taken[cell->face_index(f)])
+            {
+              edge_taken[cell->face_index(f)] = true;
+              points.push_back({to_point(cell->face(f)->center()), "the midpoint of a cell's edge"});
+            }
+      };
+      const auto at_place_point = [&](const auto &cell) {
+        const double tolerance = 1e-9 * cell->diameter();
+        for (const auto v : cell->vertex_indices())
+          for (const Point x : place.points)
+            if (geometry::norm(to_point(cell->vertex(v)) - x) <= tolerance)
+              return true;
+        return false;
+      };
+      for (const auto &cell : tria.active_cell_iterators())
         {
+          bool holds_pd_nodes = false;
+          if (place.kind == Kind::region)
+            holds_pd_nodes = cell->material_id() == place.id;
+          else if (place.kind == Kind::point)
+            holds_pd_nodes = pd_nodes && at_place_point(cell);
+          else
+            for (const auto f : cell->face_indices())
+              if (cell->face(f)->at_boundary() && cell->face(f)->boundary_id() == place.id)
+                {
+                  holds_pd_nodes = pd_nodes;
+                  const Point a = to_point(cell->face(f)->vertex(0)), b = to_point(cell->face(f)->vertex(1));
+                  points.push_back({0.5 * (a + b), "the midpoint of a face"});
+                  for (const auto &q : face_rule.get_points())
+                    points.push_back({a + q[0] * (b - a), "a Gauss point of a face"});
+                }
+          if (holds_pd_nodes)
+            add_cell(cell);
+        }
+      return points;
+    }
+
+    /// The field per unit lambda of an expression, checked to be finite and linear in lambda at
+    /// the points. A message names the entry, the assignment and the point (short enough that the
+    /// one line holds all three).
+    conditions::Field linear_field(const std::string &entry, const Parsed &p, const std::string &variable,
+                                   const std::vector<CheckedPoint> &points)
+    {
+      const std::string &expression = p.values.at(variable);
+      const auto         f          = compile(expression, entry);
+      const std::string  assignment = p.place + ": " + variable + " = " + echoed(expression);
+      for (const auto &point : points)
+        {
+          const Point  x  = point.x;
           const double f0 = f(x, 0.), f1 = f(x, 1.), f2 = f(x, 2.);
           const double scale = std::max({std::abs(f1), std::abs(f2), 1e-300});
+          const auto   where = [&] {
+            return to_text(x) + ", " + point.what + " of " + p.place + ", it is " + to_text(f0, 4) + ", " + to_text(f1, 4) +
+                   ", " + to_text(f2, 4) + " at lambda = 0, 1, 2";
+          };
           if (!std::isfinite(f0) || !std::isfinite(f1) || !std::isfinite(f2))
-            throw InvalidParameter(entry, p.text, variable + " is not finite at " + to_text(x));
+            throw InvalidParameter(entry, assignment,
+                                   variable + " must be finite wherever the methods take it (on and about its place): at " +
+                                     where());
           if (std::abs(f0) > 1e-12 * scale || std::abs(f2 - 2. * f1) > 1e-9 * scale)
-            throw InvalidParameter(entry, p.text,
-                                   variable + " must be proportional to the load factor lambda (0 at lambda = 0, "
-                                              "linear in it): the methods scale the whole loading with lambda; at " +
-                                     to_text(x) + " it is " + to_text(f0) + ", " + to_text(f1) + ", " + to_text(f2) +
-                                     " at lambda = 0, 1, 2");
+            throw InvalidParameter(entry, assignment,
+                                   variable + " must be proportional to the load factor lambda (the methods scale the "
+                                              "whole loading with it): at " + where());
         }
       return [f](Point x) { return f(x, 1.); };
     }
 
-    void read_conditions(const SceneSettings &s, const Places &places, conditions::Conditions &out)
+    void read_conditions(const SceneSettings &s, const Places &places, const dealii::Triangulation<2> &tria,
+                         conditions::Conditions &out)
     {
       using Kind = conditions::Place::Kind;
       for (const auto &p : parse_entry("Displacement", s.displacement, {"ux", "uy"}))
         {
           conditions::Displacement d;
           d.place = places.find("Displacement", p.text, p.place, {Kind::boundary, Kind::point, Kind::region});
+          const auto at = checked_points(d.place, tria, true);
           if (p.values.count("ux"))
-            d.ux = linear_field("Displacement", p, "ux", d.place.points);
+            d.ux = linear_field("Displacement", p, "ux", at);
           if (p.values.count("uy"))
-            d.uy = linear_field("Displacement", p, "uy", d.place.points);
+            d.uy = linear_field("Displacement", p, "uy", at);
           if (p.values.empty())
             throw InvalidParameter("Displacement", p.text, "names no component: give ux, uy or both");
           out.displacements.push_back(d);
@@ -383,9 +481,10 @@ namespace pumpd::coupling
           if (p.values.empty())
             throw InvalidParameter("Traction", p.text, "names no component: give tx, ty or p");
           const auto zero = [](Point) { return 0.; };
-          t.tx = p.values.count("tx") ? linear_field("Traction", p, "tx", t.place.points) : zero;
-          t.ty = p.values.count("ty") ? linear_field("Traction", p, "ty", t.place.points) : zero;
-          t.p  = p.values.count("p") ? linear_field("Traction", p, "p", t.place.points) : zero;
+          const auto at   = checked_points(t.place, tria, false);
+          t.tx = p.values.count("tx") ? linear_field("Traction", p, "tx", at) : zero;
+          t.ty = p.values.count("ty") ? linear_field("Traction", p, "ty", at) : zero;
+          t.p  = p.values.count("p") ? linear_field("Traction", p, "p", at) : zero;
           out.tractions.push_back(t);
         }
       for (const auto &p : parse_entry("Point force", s.point_force, {"fx", "fy"}))
@@ -395,8 +494,9 @@ namespace pumpd::coupling
           if (p.values.empty())
             throw InvalidParameter("Point force", p.text, "names no component: give fx, fy or both");
           const Point x = f.place.points.front();
-          f.force = {p.values.count("fx") ? linear_field("Point force", p, "fx", {x})(x) : 0.,
-                     p.values.count("fy") ? linear_field("Point force", p, "fy", {x})(x) : 0.};
+          const std::vector<CheckedPoint> at = {{x, "the vertex"}};
+          f.force = {p.values.count("fx") ? linear_field("Point force", p, "fx", at)(x) : 0.,
+                     p.values.count("fy") ? linear_field("Point force", p, "fy", at)(x) : 0.};
           out.forces.push_back(f);
         }
       if (out.tractions.empty() && out.forces.empty() &&
@@ -574,7 +674,12 @@ namespace pumpd::coupling
             }
           catch (const InvalidParameter &e)
             {
-              throw InvalidParameter("Initial cracks", trim(line), e.what());
+              // A crack in other units than the mesh lies off the body's box altogether: say where the body is.
+              const geometry::Box box = body.bounding_box();
+              const bool off_box = std::any_of(crack.begin(), crack.end(), [&](Point p) { return !box.contains(p, tolerance); });
+              throw InvalidParameter("Initial cracks", trim(line),
+                                     std::string(e.what()) +
+                                       (off_box ? " (the body spans " + to_text(box) + ", in metres as every length)" : ""));
             }
           // An end off the boundary by less than a tenth of the cell it lies in was meant as a mouth.
           for (const Point end : {crack.front(), crack.back()})
@@ -659,6 +764,7 @@ namespace pumpd::coupling
       throw InvalidParameter(entry, directory,
                              "cannot be used (" + error.message() +
                                "): a folder this user can create and write to, or empty to write nothing");
+    reserve_output_directory(entry, directory);
   }
 
   namespace
@@ -683,7 +789,25 @@ namespace pumpd::coupling
     }
   } // namespace
 
-  Scene build_scene(const SceneSettings &s)
+  namespace
+  {
+    /// Warns where the body's size lies outside that of solid specimens and structures in metres
+    /// (1 mm to 10 m across): a mesh drawn in millimetres, or in metres for a scene in
+    /// millimetres, still runs, at a size a thousand times off.
+    void warn_of_scale(const geometry::Body &body, std::ostream *progress)
+    {
+      const geometry::Box box  = body.bounding_box();
+      const double        size = std::max(box.width(), box.height());
+      if (progress == nullptr || (size >= 1e-3 && size <= 10.))
+        return;
+      *progress << "warning: Mesh file: the body measures " << pumpd::to_text(size, 3) << " m across ("
+                << to_text(box) << "); every length of a scene is in metres (the mesh, Initial cracks, the "
+                << "sections' lengths): a mesh drawn in millimetres needs Mesh.ScalingFactor = 0.001 in its .geo\n";
+      progress->flush();
+    }
+  } // namespace
+
+  Scene build_scene(const SceneSettings &s, std::ostream *progress)
   {
     Scene scene;
     scene.mesh_file        = s.mesh_file;
@@ -695,7 +819,7 @@ namespace pumpd::coupling
       throw InvalidParameter("Mesh file", "(empty)", "a scene needs a mesh: a gmsh .geo or .msh file");
 
     auto tria  = std::make_shared<dealii::Triangulation<2>>();
-    auto names = global::read_mesh(s.mesh_file, *tria, s.mesh_size, s.max_cells);
+    auto names = global::read_mesh(s.mesh_file, *tria, s.mesh_size, s.max_cells, progress);
     try
       {
         scene.body = global::body_of(*tria);
@@ -705,8 +829,9 @@ namespace pumpd::coupling
         throw InvalidParameter("Mesh file", s.mesh_file, e.what());
       }
     scene.mesh = tria;
+    warn_of_scale(scene.body, progress);
     const Places places(tria, std::move(names));
-    read_conditions(s, places, scene.conditions);
+    read_conditions(s, places, *tria, scene.conditions);
     check_conflicts(scene.conditions);
     check_rigid_motion(scene.conditions, scene.body);
     const geometry::Box box = scene.body.bounding_box();
@@ -767,6 +892,8 @@ namespace pumpd::coupling
 
   geometry::Polyline read_path(const std::string &file)
   {
+    if (const auto kind = special_file_kind(file); !kind.empty())
+      throw InvalidParameter("Reference path", file, "is " + kind + ", not a regular file (a CSV of x,y lines)");
     std::ifstream in(file);
     if (!in)
       throw InvalidParameter("Reference path", file, "cannot be opened (relative paths start at the current directory)");

@@ -10,11 +10,12 @@
 //   - what to report as load and displacement (load_displacement.csv);
 //   - the material.
 // Reading it checks everything a method relies on before any long work: names that exist, values
-// linear in lambda, a body held against rigid motion, no two conditions fighting over a vertex,
+// finite and linear in lambda wherever a method takes them, a body held against rigid motion, no two conditions fighting over a vertex,
 // cracks inside the body with their mouths on its boundary.
 #pragma once
 
 #include <cstdint>
+#include <iosfwd>
 #include <memory>
 #include <string>
 #include <vector>
@@ -98,12 +99,15 @@ namespace pumpd::coupling
   };
 
   /// Creates the folder `directory` (nothing if it is empty: a run that writes nothing) before any
-  /// work; throws InvalidParameter naming `entry` if it cannot be created or written to.
+  /// work and reserves it for this run (basics/output.h: the first file written into it locks it
+  /// against other pumpd processes); throws InvalidParameter naming `entry` if it cannot be
+  /// created or written to.
   void make_output_directory(const std::string &entry, const std::string &directory);
 
   /// Reads the mesh and builds the scene. Throws InvalidParameter naming the entry and what is
-  /// allowed for every check in the header comment.
-  Scene build_scene(const SceneSettings &settings);
+  /// allowed for every check in the header comment. With `progress`, meshing a .geo reports there
+  /// while gmsh runs (global::read_mesh).
+  Scene build_scene(const SceneSettings &settings, std::ostream *progress = nullptr);
 
   /// A hash (FNV-1a) of what makes the scene's geometry: the mesh's vertices and cells and the
   /// initial cracks. A cycle checkpoint keeps it, so that a run resumes only the scene that wrote
@@ -111,6 +115,7 @@ namespace pumpd::coupling
   std::uint64_t geometry_fingerprint(const Scene &scene);
 
   /// Reference path (x, y per line; lines starting with '#' or a letter are skipped). Throws
-  /// InvalidParameter("Reference path", ...) if it cannot be read.
+  /// InvalidParameter("Reference path", ...) if it cannot be read or is not a regular file (a FIFO
+  /// or a device is not opened).
   geometry::Polyline read_path(const std::string &file);
 } // namespace pumpd::coupling

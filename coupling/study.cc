@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "error.h"
+#include "output.h"
 #include "parameters.h"
 #include "program.h"
 #include "study_plan.h"
@@ -221,10 +222,10 @@ namespace pumpd::coupling
     /// The scene, its .geo meshed once for the study and its runs: the mesh cache
     /// (PUMPD_MESH_CACHE, global/mesh.h), unless the user set one, is the study's meshes/, and the
     /// runs inherit it.
-    Scene build_scene_through_cache(const SceneSettings &settings, const std::string &directory)
+    Scene build_scene_through_cache(const SceneSettings &settings, const std::string &directory, std::ostream &out)
     {
       ::setenv("PUMPD_MESH_CACHE", (directory + "/meshes").c_str(), 0);
-      return build_scene(settings);
+      return build_scene(settings, &out);
     }
 
     /// A study under way: the scene, the runs planned, those recorded; each planned run taken in
@@ -236,13 +237,15 @@ namespace pumpd::coupling
       Study(const std::string &scene_file, const std::string &executable, std::ostream &out)
         : parameters(read_parameters(scene_file))
         , directory(study_directory(parameters))
-        , scene(build_scene_through_cache(parameters.scene, directory))
+        , scene(build_scene_through_cache(parameters.scene, directory, out))
         , executable(executable)
         , version(program_version(executable))
         , plan(plan_runs(scene_file, scene, parameters.study, directory, version))
         , runs(directory)
         , out(out)
       {
+        // Planned and checked: the study writes from here on (its runs lock their own directories).
+        claim_output_directory(directory);
         out << "study: " << scene_file << ", " << plan.size() << " runs into " << directory << " (program "
             << version << ")" << std::endl;
       }

@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <sstream>
 #include <string>
 #include <utility>
 
 #include "crack_network.h"
 #include "error.h"
+#include "segment_tree.h"
 
 namespace pumpd::global
 {
@@ -55,44 +55,53 @@ namespace pumpd::global
       return dot(e1, e2) < 0. && std::abs(cross(e1, e2)) <= 1e-14 * norm(e1) * norm(e2);
     }
 
-    /// Signed distance from x to the polyline v extended by rays at both ends (the first segment
-    /// backwards, the last one forwards), + on the left of v. The nearest point lies on segment s
-    /// at parameter t = (x - a).(b - a) / |b - a|^2, clamped to [0, 1] except at the open ends. If it
-    /// is an interior vertex k, the sign is that of (x - v_k).(n_{k-1} + n_k) with the unit left
-    /// normals n of the two segments at k (the pseudo-normal).
-    double signed_distance_to(const geometry::Polyline &v, Point x)
+    /// The segment tree of the interior segments 1, ..., n - 2 of a polyline of n segments: the
+    /// end segments extend into rays (signed_distance_to), which no box bounds.
+    geometry::SegmentTree interior_tree(const geometry::Polyline &v)
+    {
+      return geometry::SegmentTree(v, 1, v.size() > 2 ? v.size() - 2 : 1);
+    }
+
+    /// The distance from x to segment s of v (its end segments extended by rays), and the
+    /// interior vertex it is measured to (0: none, the nearest point lies on the segment or ray).
+    std::pair<double, std::size_t> to_segment(const geometry::Polyline &v, std::size_t s, Point x)
     {
       const std::size_t segments = v.size() - 1;
-      double            best     = std::numeric_limits<double>::infinity();
-      std::size_t       best_segment = 0, best_vertex = 0; // best_vertex > 0: nearest at a kink
-      for (std::size_t s = 0; s < segments; ++s)
-        {
-          const Point  a = v[s], ab = v[s + 1] - a;
-          const double t = dot(x - a, ab) / dot(ab, ab);
-          std::size_t  vertex = 0;
-          if (t <= 0. && s > 0)
-            vertex = s;
-          else if (t >= 1. && s + 1 < segments)
-            vertex = s + 1;
-          const double d = vertex > 0 ? norm(x - v[vertex]) : std::abs(cross(ab, x - a)) / norm(ab);
-          if (d < best)
-            {
-              best         = d;
-              best_segment = s;
-              best_vertex  = vertex;
-            }
-        }
+      const Point       a = v[s], ab = v[s + 1] - a;
+      const double      t = dot(x - a, ab) / dot(ab, ab);
+      std::size_t       vertex = 0;
+      if (t <= 0. && s > 0)
+        vertex = s;
+      else if (t >= 1. && s + 1 < segments)
+        vertex = s + 1;
+      return {vertex > 0 ? norm(x - v[vertex]) : std::abs(cross(ab, x - a)) / norm(ab), vertex};
+    }
+
+    /// Signed distance from x to the polyline v extended by rays at both ends (the first segment
+    /// backwards, the last one forwards), + on the left of v; `interior` is v's interior_tree. The
+    /// nearest point lies on segment s at parameter t = (x - a).(b - a) / |b - a|^2, clamped to
+    /// [0, 1] except at the open ends (the first such segment where several are as near). If it
+    /// is an interior vertex k, the sign is that of (x - v_k).(n_{k-1} + n_k) with the unit left
+    /// normals n of the two segments at k (the pseudo-normal).
+    double signed_distance_to(const geometry::Polyline &v, const geometry::SegmentTree &interior, Point x)
+    {
+      const std::size_t segments = v.size() - 1;
+      const auto        distance = [&](std::size_t s) { return to_segment(v, s, x).first; };
+      auto              best     = interior.nearest(x, distance, {0, distance(0)});
+      if (segments > 1)
+        if (const double d = distance(segments - 1); d < best.second)
+          best = {segments - 1, d};
+      const std::size_t s = best.first, k = to_segment(v, s, x).second;
 
       double orientation;
-      if (best_vertex > 0)
+      if (k > 0)
         {
-          const std::size_t k = best_vertex;
-          const Point       pseudo_normal = left_normal(unit(v[k] - v[k - 1])) + left_normal(unit(v[k + 1] - v[k]));
+          const Point pseudo_normal = left_normal(unit(v[k] - v[k - 1])) + left_normal(unit(v[k + 1] - v[k]));
           orientation = dot(x - v[k], pseudo_normal);
         }
       else
-        orientation = cross(v[best_segment + 1] - v[best_segment], x - v[best_segment]);
-      return orientation >= 0. ? best : -best;
+        orientation = cross(v[s + 1] - v[s], x - v[s]);
+      return orientation >= 0. ? best.second : -best.second;
     }
   } // namespace
 
@@ -131,7 +140,7 @@ namespace pumpd::global
       if (const auto c = body.crossing(points[s], points[s + 1], tol); c != geometry::Body::Crossing::none)
         throw InvalidParameter("Crack segment " + std::to_string(s), to_text(points[s]) + " - " + to_text(points[s + 1]),
                                c == geometry::Body::Crossing::hole ? "passes through a hole" : "crosses the body outline");
-    update_tips();
+    update();
     if (tip_list.empty())
       throw InvalidParameter("Crack", to_text(points.front()) + " ... " + to_text(points.back()),
                              "both ends lie on the body's boundary, so the crack has no tip to grow" +
@@ -142,7 +151,7 @@ namespace pumpd::global
 
   double Crack::length() const { return geometry::length(points); }
 
-  double Crack::signed_distance(Point x) const { return signed_distance_to(points, x); }
+  double Crack::signed_distance(Point x) const { return signed_distance_to(points, interior, x); }
 
   int Crack::side(Point x) const
   {
@@ -156,7 +165,7 @@ namespace pumpd::global
   const Crack::Junction *Crack::junction_beyond(Point x) const
   {
     for (const auto &j : junction)
-      if (j && dot(x - j->at, j->d) > 0. && (signed_distance_to(j->face, x) >= 0. ? 1 : -1) != j->near)
+      if (j && dot(x - j->at, j->d) > 0. && (signed_distance_to(j->face, j->face_interior, x) >= 0. ? 1 : -1) != j->near)
         return &*j;
     return nullptr;
   }
@@ -248,15 +257,14 @@ namespace pumpd::global
       points.insert(points.begin(), p);
     else
       points.push_back(p);
-    update_tips();
+    update();
   }
 
   double Crack::distance(Point x) const
   {
-    double d = std::numeric_limits<double>::infinity();
-    for (std::size_t s = 0; s + 1 < points.size(); ++s)
-      d = std::min(d, geometry::distance_to_segment(x, points[s], points[s + 1]));
-    return d;
+    const auto        to = [&](std::size_t s) { return geometry::distance_to_segment(x, points[s], points[s + 1]); };
+    const std::size_t last = points.size() - 2;
+    return std::min(interior.nearest(x, to, {0, to(0)}).second, to(last));
   }
 
   void Crack::join(std::size_t t, Point at, const Crack &other)
@@ -283,16 +291,18 @@ namespace pumpd::global
     j.at              = at;
     j.d               = front ? unit(points[0] - points[1]) : unit(segment);
     j.face            = o;
-    j.near            = signed_distance_to(o, at - (1e-3 * norm(segment)) * j.d) >= 0. ? 1 : -1;
+    j.face_interior   = interior_tree(j.face);
+    j.near            = signed_distance_to(o, other.interior, at - (1e-3 * norm(segment)) * j.d) >= 0. ? 1 : -1;
     const Point along = unit(o[face + 1] - o[face]);
     const Point back  = dot(along, j.d) <= 0. ? along : -1. * along;
     j.beyond          = cross(segment, back) >= 0. ? 1 : -1;
     junction[front ? 0 : 1] = j;
-    update_tips();
+    update();
   }
 
-  void Crack::update_tips()
+  void Crack::update()
   {
+    interior = interior_tree(points);
     tip_list.clear();
     const std::size_t last = points.size() - 1;
     if (!junction[0] && body.clearance(points.front()) > tol)

@@ -27,6 +27,7 @@
 #include <vector>
 
 #include "body.h"
+#include "segment_tree.h"
 
 namespace pumpd::global
 {
@@ -90,18 +91,21 @@ namespace pumpd::global
     {
       Point              at;
       Point              d; ///< the direction of the joined end, out of the crack (into the other crack)
-      geometry::Polyline face;      ///< the other crack's polyline
+      geometry::Polyline    face;          ///< the other crack's polyline
+      geometry::SegmentTree face_interior; ///< of `face`, for its signed distance
       int                near = 1;  ///< the sign of the other crack's level set on this crack's side
       int                beyond = 1;
     };
 
-    void update_tips();
+    /// The segment tree and the tips after the vertices changed.
+    void update();
     /// The junction whose constant H takes at x, if any.
     const Junction *junction_beyond(Point x) const;
 
     geometry::Polyline                     points;
     geometry::Body                         body;
     double                                 tol;
+    geometry::SegmentTree                  interior; ///< of the segments between the end segments
     std::vector<Tip>                       tip_list;
     std::array<std::optional<Junction>, 2> junction{}; ///< at the first / the last vertex
   };

@@ -16,6 +16,7 @@
 #include <limits>
 #include <map>
 #include <optional>
+#include <ostream>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -89,16 +90,23 @@ namespace pumpd::global
       return args;
     }
 
-    /// Runs gmsh on a .geo file in `mode` (gmsh_arguments) into `out`, its output into `log`.
+    /// Runs gmsh on a .geo file in `mode` (gmsh_arguments) into `out`, its output into `log`; with
+    /// `progress`, a line there every 10 s while gmsh runs (a large .geo takes minutes).
     void run_gmsh(const std::string &file, const std::string &mode, double characteristic_length,
-                  const fs::path &out, const fs::path &log)
+                  const fs::path &out, const fs::path &log, std::ostream *progress)
     {
       std::vector<std::string> args = gmsh_arguments(mode, characteristic_length);
       const std::string        gmsh = args.front();
       args.insert(args.end(), {"-o", out.string(), file});
+      Heartbeat heartbeat;
+      if (progress != nullptr)
+        heartbeat = {10., [&](double seconds) {
+                       *progress << "meshing " << file << ": " << to_text(std::floor(seconds)) << " s, gmsh log: "
+                                 << one_line(last_line(log.string())) << std::endl;
+                     }};
       // A .geo that never finishes (a loop without end) must not hang the run.
       const double     time_limit = 600.;
-      const ProgramRun run        = run_program(args, log.string(), time_limit);
+      const ProgramRun run        = run_program(args, log.string(), time_limit, heartbeat);
       if (run.timed_out)
         throw InvalidParameter("Mesh file", file,
                                "gmsh did not finish within " + to_text(time_limit) +
@@ -220,10 +228,11 @@ namespace pumpd::global
     /// Cells a .geo would be meshed into, before meshing: the area of the bounding box of its
     /// points over h^2, h the characteristic length (else the smallest one of its points). The
     /// geometry comes from gmsh's unrolled .geo (gmsh -0: every coordinate evaluated).
-    double estimated_cells(const std::string &file, double characteristic_length, const fs::path &directory)
+    double estimated_cells(const std::string &file, double characteristic_length, const fs::path &directory,
+                           std::ostream *progress)
     {
       const fs::path unrolled = directory / "geometry.geo_unrolled";
-      run_gmsh(file, "-0", characteristic_length, unrolled, directory / "gmsh-0.log");
+      run_gmsh(file, "-0", characteristic_length, unrolled, directory / "gmsh-0.log", progress);
       std::ifstream in(unrolled);
       std::string   line;
       double        x_min = std::numeric_limits<double>::infinity(), x_max = -x_min, y_min = x_min, y_max = -x_min;
@@ -397,7 +406,7 @@ namespace pumpd::global
   } // namespace
 
   MeshNames read_mesh(const std::string &file, dealii::Triangulation<2> &tria, double characteristic_length,
-                      double max_cells)
+                      double max_cells, std::ostream *progress)
   {
     if (!std::isfinite(characteristic_length) || characteristic_length < 0.)
       throw InvalidParameter("Mesh size", to_text(characteristic_length),
@@ -405,6 +414,8 @@ namespace pumpd::global
 
     const fs::path path(file);
     std::error_code error;
+    if (const auto kind = special_file_kind(file); !kind.empty())
+      throw InvalidParameter("Mesh file", file, "is " + kind + ", not a regular file (a gmsh .msh or .geo file)");
     if (!fs::is_regular_file(path, error))
       throw InvalidParameter("Mesh file", file, "no such file");
 
@@ -433,10 +444,10 @@ namespace pumpd::global
         if (!read_cached(cached, file, tria, names))
           {
             const TemporaryDirectory directory;
-            too_many(estimated_cells(file, characteristic_length, directory.path()),
+            too_many(estimated_cells(file, characteristic_length, directory.path(), progress),
                      "the mesh would have about (bounding box / size^2)");
             const fs::path msh = directory.path() / "mesh.msh";
-            run_gmsh(file, "-2", characteristic_length, msh, directory.path() / "gmsh.log");
+            run_gmsh(file, "-2", characteristic_length, msh, directory.path() / "gmsh.log", progress);
             read_msh(msh, file, tria);
             names = read_names(msh, file);
             if (!cached.empty())

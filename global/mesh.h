@@ -10,6 +10,7 @@
 
 #include <deal.II/base/types.h>
 
+#include <iosfwd>
 #include <map>
 #include <string>
 #include <vector>
@@ -47,11 +48,14 @@ namespace pumpd::global
   /// unrolled geometry, before meshing; not on a cache hit) or a mesh whose cell count exceeds
   /// it is refused, and so is one whose global problem would not fit this machine's memory
   /// (check_memory).
-  /// Throws InvalidParameter: "Mesh file" (missing, unknown extension, unreadable, cells that
-  /// are not quadrilaterals, gmsh not found or failing, with its exit status and first error),
-  /// "Mesh size" (negative or not finite, or too many cells).
+  /// With `progress`, while gmsh runs a line there every 10 s: "meshing <file>: <seconds> s, gmsh
+  /// log: <its last line>". A signal that interrupts gmsh ends read_mesh with pumpd::Interrupted
+  /// (basics/program.h), gmsh and its temporary directory gone.
+  /// Throws InvalidParameter: "Mesh file" (missing, not a regular file, unknown extension,
+  /// unreadable, cells that are not quadrilaterals, gmsh not found or failing, with its exit status
+  /// and first error), "Mesh size" (negative or not finite, or too many cells).
   MeshNames read_mesh(const std::string &file, dealii::Triangulation<2, 2> &tria, double characteristic_length = 0.,
-                      double max_cells = 0.);
+                      double max_cells = 0., std::ostream *progress = nullptr);
 
   /// A hash (hex) of what a mesh file is made of: a .geo's text, the option file gmsh merges with
   /// it (<file>.opt) and the files it reads (Include, Merge, ShapeFromFile), recursively; any

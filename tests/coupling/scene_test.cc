@@ -2,7 +2,8 @@
 // scenes with exact answers: the Ingraffea beam read from its scene file (named places, the point
 // force per unit load, the body); a plate in uniaxial tension, whose Q1 solution is exact (the
 // mean displacement of the loaded edge and the reaction of the supported one, as the report
-// reads them); expressions of x, y and lambda; a named region held by its cells.
+// reads them); expressions of x, y and lambda, checked between the vertices too; a named region
+// held by its cells.
 #include <gtest/gtest.h>
 
 #include <deal.II/grid/tria.h>
@@ -10,6 +11,7 @@
 #include <cmath>
 
 #include "elasticity.h"
+#include "error.h"
 #include "global_conditions.h"
 #include "scene.h"
 #include "scene_file.h"
@@ -111,4 +113,43 @@ TEST(Scene, ExpressionsAndRegions)
   const Solved s(scene, 2.);
   EXPECT_NEAR(s.problem->displacement({0.55, 0.25}).x, 2e-3 * 1.25, 1e-14);
   EXPECT_NEAR(s.problem->displacement({0.55, 0.25}).y, -4e-3 * 0.55, 1e-14);
+}
+
+// A field is checked where the methods take it, not only at the vertices: a lambda^2 term that
+// vanishes at every vertex and edge of the plate's 0.1 m cells shows inside a region's cells; one
+// that vanishes on a boundary but not beside it shows in the cells along it for a displacement (full
+// PD's nodes in a band there), not for a traction (the global problem takes it on the faces only).
+TEST(Scene, ExpressionsAreCheckedBetweenTheVertices)
+{
+  const auto refusal = [](const SceneSettings &s) -> std::string {
+    try
+      {
+        build_scene(s);
+      }
+    catch (const InvalidParameter &e)
+      {
+        return e.what();
+      }
+    return "(accepted)";
+  };
+  const std::string periodic = "1e-3 * lambda + 1e-3 * lambda^2 * sin(10 * pi * x) * sin(10 * pi * y)";
+  EXPECT_NE(refusal(plate("plate: ux = " + periodic, "")).find(
+              "ux must be proportional to the load factor lambda (the methods scale the whole loading with it): at "),
+            std::string::npos);
+  EXPECT_NE(refusal(plate("plate: ux = " + periodic, "")).find("the centre of a cell of plate"), std::string::npos);
+
+  const std::string beside_top = "lambda * (1 + lambda * (0.5 - y))";
+  const std::string displaced  = refusal(plate("bottom: uy = 0; left: ux = 0; top: uy = 1e-3 * " + beside_top, ""));
+  EXPECT_NE(displaced.find("Displacement = top: uy = 1e-3 * " + beside_top + ": uy must be proportional"), std::string::npos)
+    << displaced;
+  EXPECT_NE(displaced.find("cell"), std::string::npos) << displaced;
+  EXPECT_EQ(refusal(plate("bottom: uy = 0; left: ux = 0", "top: ty = " + beside_top)), "(accepted)");
+
+  // Not finite between the vertices at x = 0.3 and 0.4 of the top edge (8 Gauss points per face).
+  const std::string gap = refusal(plate("bottom: uy = 0; left: ux = 0", "top: ty = lambda * sqrt(abs(x - 0.35) - 0.04)"));
+  EXPECT_NE(gap.find("Traction = top: ty = lambda * sqrt(abs(x - 0.35) - 0.04): ty must be finite wherever the methods "
+                     "take it (on and about its place): at (0.3"),
+            std::string::npos)
+    << gap;
+  EXPECT_NE(gap.find("of a face of top, it is -nan"), std::string::npos) << gap;
 }

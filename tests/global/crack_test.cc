@@ -472,3 +472,37 @@ TEST(Crack, DistanceIsToTheSegments)
   EXPECT_NEAR(e.distance({0.9, 0.5}), 0.3, 1e-15);
   EXPECT_NEAR(std::abs(e.signed_distance({0.9, 0.5})), 0., 1e-15);
 }
+
+// A crack digitised finely, as a measured path is: 3000 vertices on a circular arc of radius R
+// about c, mouth on the plate's left edge. Its level set is R - |x - c| (+ outside the arc, on the
+// left of the polyline walked from the mouth) within the arc's sagitta between two vertices,
+// ahead of the tip the signed distance to the last segment's line, and its distance the same.
+TEST(Crack, LevelSetOfAFinelyDigitisedCrack)
+{
+  const double      radius = 0.8, sweep = 0.6;
+  const Point       centre{0., -0.3};
+  const std::size_t n = 3000;
+  Polyline          arc;
+  for (std::size_t k = 0; k < n; ++k)
+    {
+      const double a = 0.5 * 3.14159265358979 - sweep * double(k) / double(n - 1);
+      arc.push_back(centre + radius * Point{std::cos(a), std::sin(a)});
+    }
+  const Crack  c(arc, plate, tol);
+  const double sagitta = radius * (1. - std::cos(0.5 * sweep / double(n - 1)));
+  for (int i = 0; i <= 20; ++i)
+    for (int j = 0; j <= 10; ++j)
+      {
+        const Point  x{0.0 + 0.02 * i, 0.1 * j};
+        const double from_centre = norm(x - centre), angle = std::atan2(x.y - centre.y, x.x - centre.x);
+        if (angle < 0.5 * 3.14159265358979 - sweep || from_centre == 0.)
+          continue; // beyond the tip, where the level set follows the last segment's line
+        EXPECT_NEAR(c.signed_distance(x), from_centre - radius, sagitta + 1e-15) << to_text(x);
+        EXPECT_NEAR(c.distance(x), std::abs(from_centre - radius), sagitta + 1e-15) << to_text(x);
+      }
+  const Tip   tip = c.tips().front();
+  const Point ahead{tip.position.x + 0.1 * tip.direction.x, tip.position.y + 0.1 * tip.direction.y};
+  const Point normal{-tip.direction.y, tip.direction.x};
+  EXPECT_NEAR(c.signed_distance(ahead + 0.05 * normal), 0.05, 1e-12);
+  EXPECT_NEAR(c.signed_distance(ahead - 0.03 * normal), -0.03, 1e-12);
+}

@@ -1,0 +1,20 @@
+// A plate 100 x 50 drawn in millimetres, as a user's CAD gives it: pumpd reads it as 100 m x 50 m.
+Point(1) = {0, 0, 0};
+Point(2) = {100, 0, 0};
+Point(3) = {100, 50, 0};
+Point(4) = {0, 50, 0};
+Line(1) = {1, 2};
+Line(2) = {2, 3};
+Line(3) = {3, 4};
+Line(4) = {4, 1};
+Curve Loop(1) = {1, 2, 3, 4};
+Plane Surface(1) = {1};
+Transfinite Curve{1, 3} = 41;
+Transfinite Curve{2, 4} = 21;
+Transfinite Surface{1};
+Recombine Surface{1};
+Physical Surface("plate") = {1};
+Physical Curve("bottom") = {1};
+Physical Curve("top") = {3};
+Physical Point("origin") = {1};
+Mesh.MshFileVersion = 2.2;
