@@ -1,25 +1,12 @@
 #include "arrival.h"
 
 #include <algorithm>
-#include <cmath>
 
 #include "error.h"
 
 namespace pumpd::coupling
 {
   using geometry::Point;
-
-  std::string hole_text(const geometry::Body &body, std::size_t hole)
-  {
-    const auto  &box    = body.bounding_box();
-    const double zero   = 1e-9 * std::max(box.width(), box.height());
-    const auto   coarse = [&](double v) { return std::abs(v) < zero ? 0. : v; };
-    const auto  &loop   = body.holes().at(hole);
-    const Point  c      = loop.centre();
-    geometry::Circle circle;
-    return "hole " + std::to_string(hole + 1) + " (centre " + geometry::to_text(Point{coarse(c.x), coarse(c.y)}) +
-           (loop.circle(circle) ? ", radius " + to_text(circle.radius) + " m)" : ")");
-  }
 
   std::string tip_stop(Point tip, const std::string &what) { return "the tip at " + geometry::to_text(tip) + " " + what; }
 
@@ -94,7 +81,7 @@ namespace pumpd::coupling
             path.resize(k + 1);
             if (hit.t > 1e-9)
               path.push_back(path[k] + hit.t * u);
-            return {path, tip_stop(path.back(), "stopped before " + hole_text(body, hit.hole))};
+            return {path, tip_stop(path.back(), "reached " + body.hole_name(hit.hole))};
           }
       }
     if (path.size() > first_new && path.size() >= 2)
@@ -111,7 +98,7 @@ namespace pumpd::coupling
         if (hit.t <= hole_reach)
           {
             path.push_back(path.back() + hit.t * u);
-            return {path, tip_stop(path.back(), "stopped before " + hole_text(body, hit.hole))};
+            return {path, tip_stop(path.back(), "reached " + body.hole_name(hit.hole))};
           }
       }
     return {path, ""};

@@ -12,11 +12,6 @@
 
 namespace pumpd::coupling
 {
-  /// "hole k (centre (x, y), radius r m)", k counted from 1 in the body's order; a coordinate of
-  /// the centre within 1e-9 of the body's size of 0 is 0 (a mesh's round-off), and a hole that is
-  /// not a circle has no radius.
-  std::string hole_text(const geometry::Body &body, std::size_t hole);
-
   /// Why a tip stopped, one wording for every method: "the tip at (x, y) <what>".
   std::string tip_stop(geometry::Point tip, const std::string &what);
 

@@ -93,8 +93,7 @@ namespace pumpd::coupling
       const Point  n      = {-tip.direction.y, tip.direction.x};
       const Point  e      = std::cos(g.angle) * tip.direction + std::sin(g.angle) * n;
       const double t_out  = body.ray_to_outline(tip.position, e);
-      const auto   hole   = body.ray_to_holes(tip.position, e, s.growth.hole_margin);
-      const double t_hole = hole.t;
+      const double t_hole = body.ray_to_holes(tip.position, e, s.growth.hole_margin).t;
       const auto [t_face, other] = ray_to_cracks(tip.position, e, look_ahead * da, polylines(cracks), g.crack);
       if (t_face <= look_ahead * da && t_face < t_out && t_face < t_hole)
         {
@@ -109,7 +108,7 @@ namespace pumpd::coupling
           g.grow   = t_hole > 1e-3 * da;
           g.to     = tip.position + t_hole * e;
           g.stops  = true;
-          g.reason = tip_stop(g.to, "stopped before " + hole_text(body, hole.hole));
+          g.reason = tip_stop(g.to, "stopped before a hole");
         }
       else if (t_out <= look_ahead * da)
         {
