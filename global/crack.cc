@@ -143,7 +143,7 @@ namespace pumpd::global
     update();
     if (tip_list.empty())
       throw InvalidParameter("Crack", to_text(points.front()) + " ... " + to_text(points.back()),
-                             "both ends lie on the body's boundary, so the crack has no tip to grow" +
+                             "both ends lie on the body outline or a hole's rim, so the crack has no tip to grow" +
                                std::string(boundary_curve(body, points.front(), tol) == boundary_curve(body, points.back(), tol)
                                              ? " (and it cuts a piece off the body: both ends on one boundary curve)"
                                              : " (it joins two boundary curves and leaves the body in one piece)"));
