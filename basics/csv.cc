@@ -3,6 +3,7 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 
 #include "error.h"
 #include "output.h"
@@ -76,5 +77,10 @@ namespace pumpd
           }
       }
     return rows;
+  }
+
+  double csv_number(const std::string &field)
+  {
+    return field.empty() ? std::numeric_limits<double>::quiet_NaN() : std::stod(field);
   }
 } // namespace pumpd

@@ -2,9 +2,68 @@
 
 #include <algorithm>
 
+#include "error.h"
+
 namespace pumpd::coupling
 {
   using geometry::Point;
+
+  std::string tip_stop(Point tip, const std::string &what) { return "the tip at " + geometry::to_text(tip) + " " + what; }
+
+  namespace
+  {
+    /// The ends of `crack` that lie at neither end of `initial` (the same crack before the run, in
+    /// either order; none: a crack the run formed, all of whose ends grew).
+    std::vector<Point> grown_ends(const geometry::Polyline *initial, const geometry::Polyline &crack, double tolerance)
+    {
+      std::vector<Point> grown;
+      for (const Point end : {crack.front(), crack.back()})
+        if (!initial || std::min(geometry::norm(end - initial->front()), geometry::norm(end - initial->back())) > tolerance)
+          grown.push_back(end);
+      return grown;
+    }
+
+    /// The ends of `crack` off the boundary.
+    std::vector<Point> tips_of(const geometry::Polyline &crack, const geometry::Body &body, double tolerance)
+    {
+      std::vector<Point> tips;
+      for (const Point end : {crack.front(), crack.back()})
+        if (body.clearance(end) > tolerance)
+          tips.push_back(end);
+      return tips;
+    }
+
+    std::string crack_text(const geometry::Polyline &crack, const std::vector<Point> &ends)
+    {
+      std::string s = to_text(geometry::length(crack)) + " m";
+      for (std::size_t k = 0; k < ends.size(); ++k)
+        s += (k == 0 ? (ends.size() == 1 ? ", tip at " : ", tips at ") : " and ") + geometry::to_text(ends[k]);
+      return s;
+    }
+  } // namespace
+
+  std::string grown_cracks_text(const std::vector<geometry::Polyline> &initial,
+                                const std::vector<geometry::Polyline> &cracks, const geometry::Body &body,
+                                double tolerance)
+  {
+    std::vector<std::pair<std::size_t, std::vector<Point>>> named; // (crack, its ends to name)
+    for (std::size_t c = 0; c < cracks.size(); ++c)
+      if (cracks[c].size() >= 2)
+        if (auto grown = grown_ends(c < initial.size() ? &initial[c] : nullptr, cracks[c], tolerance); !grown.empty())
+          named.emplace_back(c, std::move(grown));
+    if (named.empty())
+      for (std::size_t c = 0; c < cracks.size(); ++c)
+        if (cracks[c].size() >= 2)
+          named.emplace_back(c, tips_of(cracks[c], body, tolerance));
+    if (named.empty())
+      return "no crack";
+    std::string s;
+    for (const auto &[c, ends] : named)
+      s += (s.empty() ? "" : "; ") +
+           (cracks.size() > 1 ? "crack " + std::to_string(c + 1) + ": " : std::string("crack ")) +
+           crack_text(cracks[c], ends);
+    return s;
+  }
 
   Arrival arrive(geometry::Polyline path, const geometry::Body &body, double margin, double reach,
                  std::size_t first_new, double hole_reach)
@@ -22,7 +81,7 @@ namespace pumpd::coupling
             path.resize(k + 1);
             if (hit.t > 1e-9)
               path.push_back(path[k] + hit.t * u);
-            return {path, "reached " + body.hole_name(hit.hole)};
+            return {path, tip_stop(path.back(), "reached " + body.hole_name(hit.hole))};
           }
       }
     if (path.size() > first_new && path.size() >= 2)
@@ -33,13 +92,13 @@ namespace pumpd::coupling
         if (t <= reach)
           {
             path.back() = path.back() + t * u;
-            return {path, "reached the outline"};
+            return {path, tip_stop(path.back(), "reached the outline")};
           }
         const auto hit = body.ray_to_holes(path.back(), u, margin);
         if (hit.t <= hole_reach)
           {
             path.push_back(path.back() + hit.t * u);
-            return {path, "reached " + body.hole_name(hit.hole)};
+            return {path, tip_stop(path.back(), "reached " + body.hole_name(hit.hole))};
           }
       }
     return {path, ""};

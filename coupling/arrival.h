@@ -12,6 +12,19 @@
 
 namespace pumpd::coupling
 {
+  /// Why a tip stopped, one wording for every method: "the tip at (x, y) <what>".
+  std::string tip_stop(geometry::Point tip, const std::string &what);
+
+  /// What the run's end line says of its cracks: each crack that grew (every crack when none did)
+  /// with its number (with several), its length and where each of its grown ends is (of one that
+  /// did not grow: its tips, the ends more than `tolerance` from the boundary), e.g. "crack 2
+  /// 0.052 m, tip at (0.1, 0.05)". `initial` are the scene's cracks, `cracks` the run's, in order
+  /// (a crack past the initial ones formed in the run: every end of it grew); an end grew if it
+  /// lies more than `tolerance` from both ends of its initial crack.
+  std::string grown_cracks_text(const std::vector<geometry::Polyline> &initial,
+                                const std::vector<geometry::Polyline> &cracks, const geometry::Body &body,
+                                double tolerance);
+
   struct Arrival
   {
     geometry::Polyline path;

@@ -866,8 +866,8 @@ namespace pumpd::coupling
     std::size_t iterations = 0;
     for (const auto &st : result.steps)
       iterations += st.iterations;
-    out << "end: " << result.stop_reason << "; crack " << geometry::length(result.path) << " m, tip at "
-        << (result.path.empty() ? std::string("none") : to_text(result.path.back())) << ", control displacement "
+    out << "end: " << result.stop_reason << "; " << grown_cracks_text(scene.cracks, result.paths, scene.body, on_boundary)
+        << ", control displacement "
         << pad << " m, " << result.steps.size() << " steps, " << result.seconds << " s\n";
     out << "pumpd-metric fullpd.nodes " << model.nodes().size() << "\n"
         << "pumpd-metric fullpd.node_steps " << result.node_steps << "\n"

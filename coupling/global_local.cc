@@ -95,8 +95,8 @@ namespace pumpd::coupling
       out << "pumpd-metric coupling.seconds_total " << r.seconds << "\n"
           << "pumpd-metric coupling.box_area_ratio " << r.mean_box_area / reference_box_area << "\n"
           << "pumpd-metric coupling.pd_node_steps " << r.pd_node_steps << "\n"
-          << "end: " << r.stop_reason << "; crack " << geometry::length(r.path) << " m, tip at "
-          << to_text(r.path.back()) << ", " << r.seconds << " s\n";
+          << "end: " << r.stop_reason << "; "
+          << grown_cracks_text(scene.cracks, r.paths, scene.body, crack_tolerance(scene)) << ", " << r.seconds << " s\n";
     }
   } // namespace
 
@@ -169,6 +169,9 @@ namespace pumpd::coupling
       /// The global problem: every tip's K and critical load factor, and the tips that get a box
       /// (the box threshold); "" or why the run stops.
       std::string solve_global(std::size_t n, std::vector<TipExchange> &parts);
+      /// Why the run stops when no tip that goes on grows at any load: the tips stopped before, and
+      /// why each other is at rest (at_rest). `track` holds the track of each state.
+      std::string at_rest_stop(const std::vector<TipState> &states, const std::vector<std::size_t> &track) const;
       /// The horizon of this tip's box (resolution.h), chosen by the path ahead of it: the PD
       /// settings, the box and the advance follow it.
       void resolve(TipExchange &part);
@@ -495,7 +498,7 @@ namespace pumpd::coupling
         if (!tracks[track[k]].stopped)
           first = std::min(first, states[k].critical_load_factor);
       if (!std::isfinite(first))
-        return "the crack closes under the load (K_I <= 0)";
+        return at_rest_stop(states, track);
       // G scales with lambda^2: at lambda = first a tip has G / G_c = (first / lambda_c)^2.
       for (std::size_t k = 0; k < states.size(); ++k)
         {
@@ -518,6 +521,17 @@ namespace pumpd::coupling
           parts.push_back(std::move(part));
         }
       return "";
+    }
+
+    std::string Cycle::at_rest_stop(const std::vector<TipState> &states, const std::vector<std::size_t> &track) const
+    {
+      std::string stop;
+      for (const auto &reason : stopped_tips)
+        stop += reason + "; ";
+      for (std::size_t k = 0; k < states.size(); ++k)
+        if (!tracks[track[k]].stopped)
+          stop += tip_stop(states[k].position, at_rest(states[k])) + "; ";
+      return stop + "no tip grows";
     }
 
     void Cycle::resolve(TipExchange &part)

@@ -1,6 +1,7 @@
 #include "global_problem.h"
 
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/tria.h>
 
 #include <algorithm>
@@ -68,12 +69,21 @@ namespace pumpd::coupling
   {
     for (const auto &crack : enriched_cracks(scene.cracks, scene))
       for (const auto &tip : crack.tips())
-        if (const double clearance = scene.body.clearance(tip.position); clearance <= settings.tip_radius)
-          throw InvalidParameter("Tip enrichment radius", to_text(settings.tip_radius),
-                                 "must be less than the distance from each initial tip to the body's outline and "
-                                 "holes (the tip at " +
-                                   to_text(tip.position) + " lies " + to_text(clearance) +
-                                   " m from it): the interaction integral's domain would cross that boundary");
+        {
+          if (const double clearance = scene.body.clearance(tip.position); clearance <= settings.tip_radius)
+            throw InvalidParameter("Tip enrichment radius", to_text(settings.tip_radius),
+                                   "must be less than the distance from each initial tip to the body's outline and "
+                                   "holes (the tip at " +
+                                     to_text(tip.position) + " lies " + to_text(clearance) +
+                                     " m from it): the interaction integral's domain would cross that boundary");
+          // The cell at the tip once refined (GlobalProblem::refine halves it at each level).
+          const auto cell =
+            dealii::GridTools::find_active_cell_around_point(*scene.mesh, dealii::Point<2>(tip.position.x, tip.position.y));
+          const double at_tip = cell->diameter() / std::pow(2., settings.refinement_levels);
+          if (const std::string why = global::unresolved_tip_separation(crack, at_tip); !why.empty())
+            throw InvalidParameter("Initial cracks", geometry::to_text(crack.vertices()),
+                                   why + "; refine the mesh at the tips (Mesh size, Refinement levels near the tip)");
+        }
   }
 
   double estimated_cells(const Scene &scene, const GlobalSettings &settings)
@@ -205,11 +215,13 @@ namespace pumpd::coupling
         s.direction = frames[t].direction;
         s.k1        = sifs[t].k1 / lambda;
         s.k2        = sifs[t].k2 / lambda;
+        s.k_terms   = sifs[t].k_terms / lambda;
         const double g = (sifs[t].k1 * sifs[t].k1 + sifs[t].k2 * sifs[t].k2) / scene.material.effective_modulus();
-        s.critical_load_factor = s.k1 > 0. ? lambda * std::sqrt(scene.material.fracture_energy / g)
-                                           : std::numeric_limits<double>::infinity();
+        const bool grows = at_rest(s).empty();
+        s.critical_load_factor = grows ? lambda * std::sqrt(scene.material.fracture_energy / g)
+                                       : std::numeric_limits<double>::infinity();
         const bool finite = std::isfinite(s.k1) && std::isfinite(s.k2) && !std::isnan(s.critical_load_factor) &&
-                            (s.k1 <= 0. || s.critical_load_factor > 0.);
+                            (!grows || s.critical_load_factor > 0.);
         if (!finite && cracked_solve_done)
           throw std::runtime_error("the global solve gave K_I = " + to_text(s.k1) + ", K_II = " + to_text(s.k2) +
                                    " Pa m^1/2 at the tip " + to_text(s.position) +
@@ -290,6 +302,18 @@ namespace pumpd::coupling
   unsigned int GlobalProblem::n_dofs() const { return problem->n_dofs(); }
   unsigned int GlobalProblem::n_enriched_dofs() const { return problem->n_enriched_dofs(); }
   void         GlobalProblem::write_vtu(const std::string &file) const { problem->write_vtu(file); }
+
+  std::string at_rest(const TipState &tip)
+  {
+    constexpr double resolved = 1e-2; // of k_terms, and of |K_II| for K_I: see the declaration
+    if (!(std::hypot(tip.k1, tip.k2) > resolved * tip.k_terms))
+      return "has no driving force (|K| = " + to_text(std::hypot(tip.k1, tip.k2), 3) +
+             " Pa m^1/2 per unit load factor, within the interaction integral's noise: under 1 % of its terms, " +
+             to_text(tip.k_terms, 3) + ")";
+    if (tip.k1 < -resolved * std::abs(tip.k2))
+      return "is closed (K_I < 0)";
+    return "";
+  }
 
   double kink_angle(double k1, double k2)
   {

@@ -51,6 +51,8 @@ namespace pumpd::coupling
   /// Refuses a scene whose initial cracks have a tip closer to the body's boundary (outline or
   /// hole) than the tip enrichment radius: the interaction integral's domain (Moes et al. 1999)
   /// would cross a free edge whose normal has a component along the crack, and K would be wrong.
+  /// Refuses too an initial crack whose two tips the mesh, refined at them, does not resolve apart
+  /// (global::unresolved_tip_separation).
   void check_tip_radius(const Scene &scene, const GlobalSettings &settings);
 
   /// The active cells of the refined mesh: the cells of the mean size within the refinement
@@ -66,8 +68,20 @@ namespace pumpd::coupling
   {
     geometry::Point position, direction;
     double          k1 = 0., k2 = 0.;           ///< [Pa m^1/2] per unit load factor
-    double          critical_load_factor = 0.; ///< lambda_c; infinity where K_I <= 0
+    double          k_terms = 0.;               ///< per unit load factor (global::StressIntensity::k_terms)
+    double          critical_load_factor = 0.; ///< lambda_c; infinity where the tip is at rest (at_rest)
   };
+
+  /// Why the tip does not grow at any load, "" if it grows at lambda_c. Both decisions are taken
+  /// at what the interaction integral resolves, not at the sign of its round-off:
+  ///  - "has no driving force ..." when |K| = sqrt(K_I^2 + K_II^2) < 1e-2 k_terms: K is then what is
+  ///    left of the cancellation of the integral's terms (a crack along the load), and neither G
+  ///    nor the kink direction means anything;
+  ///  - "is closed (K_I < 0)" when K_I < -1e-2 |K_II|: the integral separates the modes to about
+  ///    1 % of the larger one (K within 1 to 2 % of handbook values, tests/global/sif_test.cc), so a
+  ///    smaller K_I has no sign and the tip is in mode II (it grows at G = K_II^2 / E', kinked by
+  ///    -sign(K_II) 70.5 degrees). The crack faces' contact is not modelled: a closed tip waits.
+  std::string at_rest(const TipState &tip);
 
   /// A refinement around a point: every cell within the refinement radius, `levels` times.
   struct Refinement

@@ -75,15 +75,15 @@ namespace pumpd::coupling
     /// Where tip grows by the increment da / (1 + |theta_c| / halving angle), at most `remaining`:
     /// tip + da e, e = cos(theta_c) d + sin(theta_c) n; to the outline, a hole's margin or another
     /// crack's face instead (and it stops or joins) if that comes within look_ahead da along e;
-    /// nowhere if K_I <= 0.
-    void plan(Growth &g, const global::Tip &tip, double k1, double remaining, const geometry::Body &body,
+    /// nowhere if the tip is at rest (at_rest: closed, or no driving force).
+    void plan(Growth &g, const global::Tip &tip, const TipState &state, double remaining, const geometry::Body &body,
               const std::vector<global::Crack> &cracks, const LefmGrowthSettings &s)
     {
-      if (k1 <= 0.)
+      if (const std::string why = at_rest(state); !why.empty())
         {
           g.grow   = false;
           g.stops  = true;
-          g.reason = "closed (K_I <= 0)";
+          g.reason = tip_stop(tip.position, why);
           return;
         }
       double da = s.lefm.growth_increment;
@@ -101,20 +101,20 @@ namespace pumpd::coupling
           g.joins  = true;
           g.other  = other;
           g.stops  = true;
-          g.reason = "joined crack " + std::to_string(other + 1);
+          g.reason = tip_stop(g.to, "joined crack " + std::to_string(other + 1));
         }
       else if (t_hole <= look_ahead * da && t_hole < t_out)
         {
           g.grow   = t_hole > 1e-3 * da;
           g.to     = tip.position + t_hole * e;
           g.stops  = true;
-          g.reason = "stopped before a hole";
+          g.reason = tip_stop(g.to, "stopped before a hole");
         }
       else if (t_out <= look_ahead * da)
         {
           g.to     = tip.position + t_out * e;
           g.stops  = true;
-          g.reason = "reached the outline";
+          g.reason = tip_stop(g.to, "reached the outline");
         }
       else
         g.to = tip.position + da * e;
@@ -211,7 +211,7 @@ namespace pumpd::coupling
                 tips[g.flat].critical_load_factor > lambda_c * (1. + s.lefm.simultaneous_tolerance))
               g.grow = false;
             else
-              plan(g, tip, tips[g.flat].k1, remaining, scene.body, cracks, s);
+              plan(g, tip, tips[g.flat], remaining, scene.body, cracks, s);
           }
         const bool last = at_limit || std::all_of(growth.begin(), growth.end(), [&](const Growth &g) {
                             return g.stops || is_stopped(g.crack, cracks[g.crack].tips()[g.tip]);
@@ -274,7 +274,7 @@ namespace pumpd::coupling
                   g->joins  = true;
                   g->other  = other;
                   g->stops  = true;
-                  g->reason = "joined crack " + std::to_string(other + 1);
+                  g->reason = tip_stop(g->to, "joined crack " + std::to_string(other + 1));
                 }
             if (g->grow)
               try
@@ -288,12 +288,12 @@ namespace pumpd::coupling
               catch (const InvalidParameter &e)
                 {
                   g->stops  = true;
-                  g->reason = std::string("cannot grow: ") + e.what();
+                  g->reason = tip_stop(tip.position, std::string("cannot grow: ") + e.what());
                 }
             if (g->stops)
               {
                 stopped[g->crack][tip.vertex == 0] = true;
-                out << "  tip " << g->flat << " " << g->reason << " at " << to_text(g->to) << "\n";
+                out << "  tip " << g->flat << ": " << g->reason << "\n";
                 result.stop_reason += (result.stop_reason.empty() ? "" : "; ") + g->reason;
               }
           }
@@ -332,8 +332,8 @@ namespace pumpd::coupling
         result.reference_deviation = directed_max_distance(scene.reference_path, result.path);
         out << "pumpd-metric lefm.published_path_max_deviation_m " << result.reference_deviation << "\n";
       }
-    out << "end: " << result.stop_reason << "; crack " << geometry::length(result.path) << " m, tip at "
-        << to_text(result.path.back()) << ", " << result.seconds << " s\n";
+    out << "end: " << result.stop_reason << "; " << grown_cracks_text(scene.cracks, result.paths, scene.body, tolerance)
+        << ", " << result.seconds << " s\n";
     return result;
   }
 } // namespace pumpd::coupling

@@ -10,9 +10,10 @@
 // side (Anderson's Williams field), and then theta_c < 0, i.e. the crack turns away from n.
 //
 // A tip stops cleanly when it reaches the outline (the crack is clipped to it and the tip
-// disappears), when it would enter a hole (it stops `hole margin` before it), when K_I <= 0
-// (closed crack); the run stops when no tip is left, after `max_steps` increments or at the
-// maximum crack length (with several cracks: their total length).
+// disappears), when it would enter a hole (it stops `hole margin` before it), when it is at rest
+// (closed, or no driving force: at_rest, global_problem.h); the run stops when no tip is left,
+// after `max_steps` increments or at the maximum crack length (with several cracks: their total
+// length).
 //
 // Several cracks: every tip of every crack has its state. The step's load factor is the smallest
 // lambda_c over the tips still growing; every tip whose lambda_c <= lambda_min (1 + tolerance)

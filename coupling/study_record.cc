@@ -41,8 +41,8 @@ namespace pumpd::coupling
   {
     std::vector<RunRecord> records;
     for (auto &r : read_csv_rows(file))
-      records.push_back({r["run"], r["key"], r["method"], r["status"], std::stod(r["wall_s"]), std::stod(r["peak_mib"]),
-                         std::stod(r["pd_node_steps"]), std::stod(r["global_dofs"]), std::stod(r["pd_seconds"])});
+      records.push_back({r["run"], r["key"], r["method"], r["status"], csv_number(r["wall_s"]), csv_number(r["peak_mib"]),
+                         csv_number(r["pd_node_steps"]), csv_number(r["global_dofs"]), csv_number(r["pd_seconds"])});
     return records;
   }
 

@@ -85,7 +85,7 @@ namespace pumpd::coupling
     double first_length = std::numeric_limits<double>::quiet_NaN();
     for (auto &r : read_csv_rows(directory + "/load_displacement.csv"))
       {
-        const double load = std::stod(r["load"]), length = std::stod(r["crack_length_m"]);
+        const double load = csv_number(r["load"]), length = csv_number(r["crack_length_m"]);
         if (std::isnan(first_length))
           first_length = length;
         const bool grown = row.record.method != "full-pd" || length > first_length + 1e-9;

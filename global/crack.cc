@@ -6,6 +6,7 @@
 #include <string>
 #include <utility>
 
+#include "crack_network.h"
 #include "error.h"
 #include "segment_tree.h"
 
@@ -142,7 +143,10 @@ namespace pumpd::global
     update();
     if (tip_list.empty())
       throw InvalidParameter("Crack", to_text(points.front()) + " ... " + to_text(points.back()),
-                             "both ends lie on the body outline or a hole's rim (no tip: the body is cut through)");
+                             "both ends lie on the body outline or a hole's rim, so the crack has no tip to grow" +
+                               std::string(boundary_curve(body, points.front(), tol) == boundary_curve(body, points.back(), tol)
+                                             ? " (and it cuts a piece off the body: both ends on one boundary curve)"
+                                             : " (it joins two boundary curves and leaves the body in one piece)"));
   }
 
   double Crack::length() const { return geometry::length(points); }

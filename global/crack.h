@@ -3,7 +3,7 @@
 //
 // Ends: an end on the body's boundary (outline or a hole's rim) is a mouth, an end joined to another
 // crack's face (join()) a junction, any other end a tip. A crack given to the constructor needs a
-// tip (both ends on the boundary would cut the body through); growth may leave none (a tip that
+// tip (with both ends on the boundary it has nothing to grow); growth may leave none (a tip that
 // reaches the outline or joins another crack). Level sets:
 //   phi(x): signed distance to the crack extended by the rays tangent to its end segments;
 //           + on the left of the polyline (walking from the first to the last vertex). At a point

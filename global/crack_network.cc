@@ -48,6 +48,17 @@ namespace pumpd::global
     }
   } // namespace
 
+  std::optional<std::size_t> boundary_curve(const geometry::Body &body, Point end, double tolerance, double hole_margin)
+  {
+    if (body.outline().distance(end) <= tolerance)
+      return 0;
+    std::optional<std::size_t> curve;
+    for (std::size_t h = 0; h < body.holes().size(); ++h)
+      if (body.holes()[h].distance(end) <= hole_margin + tolerance)
+        curve = 1 + h;
+    return curve;
+  }
+
   std::string cut_through_message(const std::vector<Crack> &cracks)
   {
     return cracks.size() == 1 ? "the crack cut the body through" : "the cracks cut the body through";
@@ -68,17 +79,10 @@ namespace pumpd::global
             std::size_t node;
             if (cracks[c].junctions()[e] && cracks.size() > 1)
               node = first_crack + nearest_other(cracks, c, end);
-            else if (body.outline().distance(end) <= tolerance)
-              node = 0;
+            else if (const auto curve = boundary_curve(body, end, tolerance, hole_margin))
+              node = *curve;
             else
-              {
-                node = first_crack;
-                for (std::size_t h = 0; h < body.holes().size(); ++h)
-                  if (body.holes()[h].distance(end) <= hole_margin + tolerance)
-                    node = 1 + h;
-                if (node == first_crack)
-                  continue; // a tip
-              }
+              continue; // a tip
             if (!network.unite(first_crack + c, node))
               return true;
           }

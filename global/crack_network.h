@@ -9,6 +9,8 @@
 // or one joined to a crack that opens on the outline does.
 #pragma once
 
+#include <cstddef>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,6 +19,11 @@
 
 namespace pumpd::global
 {
+  /// The boundary curve an end of a crack opens on: 0 the outline (within `tolerance` of it),
+  /// 1 + h hole h (within `hole_margin` + `tolerance` of its rim); none for an end off the boundary.
+  std::optional<std::size_t> boundary_curve(const geometry::Body &body, Point end, double tolerance,
+                                            double hole_margin = 0.);
+
   /// True if the cracks, through their mouths and junctions, cut a piece off the body; ends
   /// within `tolerance` of the outline, or within `hole_margin` + `tolerance` of a hole's rim (where
   /// growth stops a tip that reached the hole), open on it.

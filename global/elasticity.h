@@ -95,7 +95,16 @@ namespace pumpd::global
     geometry::Point tip;
     double          k1 = 0.;
     double          k2 = 0.;
+    /// The size of the terms the interaction integral sums, as a K: E' / 2 int |integrand| dA, the
+    /// larger of the two modes. K far below it is what is left of their cancellation (a field
+    /// that does not drive the tip), not a stress intensity.
+    double k_terms = 0.;
   };
+
+  /// Why the mesh cannot give K at the tips of `crack` ("" if it can): the interaction integral's
+  /// domain about a tip, which ends half way to the crack's other tip, is smaller than the cell at
+  /// the tip (`cell_diameter`). So short a crack, a few cells long, the mesh does not resolve.
+  std::string unresolved_tip_separation(const Crack &crack, double cell_diameter);
 
   /// The stress at a vertex of the mesh [Pa].
   struct NodalStress
@@ -192,7 +201,7 @@ namespace pumpd::global
     std::vector<NodalStress> nodal_stresses() const;
 
     /// K_I, K_II at every tip by the interaction integral (domain form) over the cells within
-    /// radius_factor * tip_radius of the tip.
+    /// radius_factor * tip_radius of the tip, and at most half way to the crack's other tip.
     std::vector<StressIntensity> stress_intensity_factors(double radius_factor = 1.) const;
 
     /// Error indicator per active cell (active_cell_index order), from the solution alone: the

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <array>
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -56,6 +57,17 @@ namespace pumpd::global
   /// The crack sides of a set of points: side[q * stride + c] = +-1 for point q and crack c
   /// (stride = max(1, number of cracks); without a crack every side is +1).
   using Sides = std::vector<int>;
+
+  /// Half the distance between the two tips of a crack (infinity for a crack with fewer): the
+  /// interaction integral's domain about a tip ends there. Each node carries the branch functions
+  /// of its nearest tip, so beyond it the enriched field is the other tip's, and a domain holding
+  /// the other tip would add that tip's field to this one's K.
+  inline double half_way_to_other_tip(const Crack &crack)
+  {
+    const auto &tips = crack.tips();
+    return tips.size() == 2 ? 0.5 * geometry::norm(tips[0].position - tips[1].position)
+                            : std::numeric_limits<double>::infinity();
+  }
 
   /// The unknowns of a cell's functions: (x, y) of each, in order.
   inline std::vector<dealii::types::global_dof_index> unknowns_of(const std::vector<LocalFunction> &functions)

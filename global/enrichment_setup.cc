@@ -252,6 +252,11 @@ namespace pumpd::global
               throw InvalidParameter("Tip enrichment radius", std::to_string(settings.tip_radius),
                                      "must be at least the diameter of the cell at the tip (" +
                                        std::to_string(cell->diameter()) + " m)");
+            for (unsigned int c = 0; c < n_cracks; ++c)
+              if (tip_in_cell[cell->active_cell_index()][c])
+                if (const std::string why = unresolved_tip_separation(cracks[c], cell->diameter()); !why.empty())
+                  throw InvalidParameter("Crack", geometry::to_text(cracks[c].vertices()),
+                                         why + "; refine the mesh at the tips");
             cell->get_dof_indices(dofs);
             for (unsigned int c = 0; c < n_cracks; ++c)
               if (tip_in_cell[cell->active_cell_index()][c])

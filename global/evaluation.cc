@@ -103,6 +103,16 @@ namespace pumpd::global
     return energy;
   }
 
+  std::string unresolved_tip_separation(const Crack &crack, double cell_diameter)
+  {
+    const double half = half_way_to_other_tip(crack);
+    if (half >= cell_diameter)
+      return "";
+    return "its tips lie " + to_text(2. * half, 3) + " m apart, less than twice the cell at a tip (" +
+           to_text(cell_diameter, 3) + " m): the interaction integral's domain ends half way between them, so the mesh "
+           "cannot give its K";
+  }
+
   // Interaction integral, domain form (Moes, Dolbow & Belytschko 1999, Eq. 34), in the tip frame:
   //   I = int_A [sigma_ij du^aux_i/dx_1 + sigma^aux_ij du_i/dx_1 - sigma_ik eps^aux_ik delta_1j] dq/dx_j dA,
   //   K = E' I / 2 with the auxiliary field of unit K_I (for K_I) or unit K_II (for K_II).
@@ -121,7 +131,11 @@ namespace pumpd::global
   // ring_of() returns (r_in, r_out); r_in = r_out means the step.
   // Several cracks: the domain of a tip must not hold another crack (its faces, not parallel to
   // the tip's x_1, would add to I), so tip_radius and r_safe are capped by the distance d_other
-  // from the tip to the nearest other crack: radius and r_safe at most 0.9 d_other.
+  // from the tip to the nearest other crack: radius and r_safe at most 0.9 d_other. Nor the
+  // crack's own other tip: at most half way to it (half_way_to_other_tip), which a crack shorter
+  // than twice the tip radius would otherwise hold.
+  // k_terms: E'/2 int |integrand| dA, the larger mode's; for a tip the field drives |K| is of its
+  // size, and far below it K is the remainder of the terms' cancellation (a crack along the load).
   std::vector<StressIntensity> EnrichedElasticity::Impl::stress_intensity_factors(double radius_factor) const
   {
     std::vector<StressIntensity> result;
@@ -145,6 +159,7 @@ namespace pumpd::global
         for (unsigned int o = 0; o < cracks.size(); ++o)
           if (o != c)
             tip_radius = std::min(tip_radius, 0.9 * cracks[o].distance(tip.position));
+        tip_radius = std::min(tip_radius, half_way_to_other_tip(crack));
         const double radius = radius_factor * tip_radius;
         Tensor<2, 2> R; // rows: tip direction and its normal
         R[0][0] = tip.direction.x;
@@ -200,7 +215,7 @@ namespace pumpd::global
             q += w * q_at(distance(p));
           return q;
         };
-        double I[2] = {0., 0.};
+        double I[2] = {0., 0.}, magnitude[2] = {0., 0.};
         for (const auto &cell : dof_handler.active_cell_iterators())
           {
             cell->get_dof_indices(dofs);
@@ -255,11 +270,12 @@ namespace pumpd::global
                         integrand += term * dq[j];
                       }
                     I[mode - 1] += integrand * fv.JxW(q);
+                    magnitude[mode - 1] += std::abs(integrand) * fv.JxW(q);
                   }
               }
           }
         const double scale = 0.5 * material.effective_modulus();
-        result.push_back({tip.position, scale * I[0], scale * I[1]});
+        result.push_back({tip.position, scale * I[0], scale * I[1], scale * std::max(magnitude[0], magnitude[1])});
       }
     return result;
   }
