@@ -26,6 +26,7 @@
 
 #include "elasticity.h"
 #include "metric.h"
+#include "sent_strip.h"
 
 using namespace pumpd;
 using namespace pumpd::global;
@@ -36,11 +37,6 @@ namespace
   const double       a  = 0.5;
   const unsigned int n  = 40; // cells across the width
   const double       h  = 1. / n;
-
-  double sent_geometry_factor(double s)
-  {
-    return 1.12 - 0.231 * s + 10.55 * s * s - 21.72 * std::pow(s, 3) + 30.39 * std::pow(s, 4);
-  }
 
   /// Steps of about h from `from` to `to`.
   void steps(std::vector<double> &out, double from, double to)
@@ -71,14 +67,11 @@ namespace
     EnrichedElasticity problem(tria, {1., 0.3, true}, settings);
     const geometry::Body body{{0., -2., 1., 2.}, {}};
     problem.set_crack(Crack({{0., 0.}, {a, 0.}}, body, 1e-12));
-    problem.add_traction(3, [](geometry::Point) { return geometry::Point{0., 1.}; });
-    problem.add_traction(2, [](geometry::Point) { return geometry::Point{0., -1.}; });
-    problem.add_dirichlet_vertex({1., -2.}, {0., 0.});
-    problem.add_dirichlet_vertex({1., 2.}, {0., 0.}, true, false);
+    sent_strip::load(problem);
     problem.setup();
     problem.assemble();
     problem.solve();
-    const double k_ref = std::sqrt(pi * a) * sent_geometry_factor(a);
+    const double k_ref = std::sqrt(pi * a) * sent_strip::geometry_factor(a);
     return problem.stress_intensity_factors().at(0).k1 / k_ref - 1.;
   }
 

@@ -30,6 +30,7 @@
 #include "elasticity.h"
 #include "metric.h"
 #include "refinement.h"
+#include "sent_strip.h"
 
 using namespace pumpd;
 using namespace pumpd::global;
@@ -42,14 +43,6 @@ namespace
   double k_tada(double a)
   {
     return std::sqrt(pi * a) * (1.12 - 0.231 * a + 10.55 * a * a - 21.72 * std::pow(a, 3) + 30.39 * std::pow(a, 4));
-  }
-
-  void load_sent(EnrichedElasticity &problem)
-  {
-    problem.add_traction(3, [](geometry::Point) { return geometry::Point{0., 1.}; });
-    problem.add_traction(2, [](geometry::Point) { return geometry::Point{0., -1.}; });
-    problem.add_dirichlet_vertex({1., -2.}, {0., 0.});
-    problem.add_dirichlet_vertex({1., 2.}, {0., 0.}, true, false);
   }
 
   struct SentResult
@@ -77,7 +70,7 @@ namespace
     settings.tip_radius = 0.15;
     EnrichedElasticity problem(tria, material, settings);
     problem.set_crack(Crack({{0., 0.}, {a, 0.}}, {{0., -2., 1., 2.}, {}}, 1e-12));
-    load_sent(problem);
+    sent_strip::load(problem);
     problem.setup();
     problem.assemble();
     problem.solve();
@@ -153,7 +146,7 @@ namespace
     EnrichmentSettings settings;
     settings.tip_radius = 0.1;
     EnrichedElasticity problem(tria, {1., 0.3, true}, settings);
-    load_sent(problem);
+    sent_strip::load(problem);
     Crack crack(g.initial, {{0., -2., 1., 2.}, {}}, 1e-12);
     for (std::size_t step = 0; step <= g.tips.size(); ++step)
       {
@@ -224,7 +217,7 @@ TEST(GlobalExtremes, NoCrackMeansNoEnrichment)
   const double       E = 2., nu = 0.3;
   EnrichedElasticity problem(tria, {E, nu, true}, settings);
   problem.set_crack(std::nullopt);
-  load_sent(problem);
+  sent_strip::load(problem);
   problem.setup();
   problem.assemble();
   problem.solve();

@@ -29,6 +29,7 @@
 #include <vector>
 
 #include "elasticity.h"
+#include "sent_strip.h"
 
 using namespace pumpd;
 using namespace pumpd::global;
@@ -57,14 +58,10 @@ namespace
     return p.y + (q.y - p.y) * (x - p.x) / (q.x - p.x);
   }
 
-  /// SENT loading: unit traction on top and bottom, rigid motions fixed at the right corners;
-  /// then set up, assemble and solve.
+  /// The SENT strip's loads; then set up, assemble and solve.
   void solve_sent(EnrichedElasticity &problem)
   {
-    problem.add_traction(3, [](geometry::Point) { return geometry::Point{0., 1.}; });
-    problem.add_traction(2, [](geometry::Point) { return geometry::Point{0., -1.}; });
-    problem.add_dirichlet_vertex({1., -2.}, {0., 0.});
-    problem.add_dirichlet_vertex({1., 2.}, {0., 0.}, true, false);
+    sent_strip::load(problem);
     problem.setup();
     problem.assemble();
     problem.solve();

@@ -36,6 +36,7 @@
 #include "elasticity.h"
 #include "metric.h"
 #include "refinement.h"
+#include "sent_strip.h"
 
 using namespace pumpd;
 using namespace pumpd::global;
@@ -63,12 +64,6 @@ namespace
   double seconds_since(std::chrono::steady_clock::time_point start)
   {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  }
-
-  /// Brown & Srawley's fit for the SENT specimen (Tada, Paris & Irwin), s = a / W.
-  double sent_geometry_factor(double s)
-  {
-    return 1.12 - 0.231 * s + 10.55 * s * s - 21.72 * std::pow(s, 3) + 30.39 * std::pow(s, 4);
   }
 
   struct Result
@@ -180,7 +175,7 @@ TEST(GlobalSif, SingleEdgeNotchTensionMatchesHandbook)
   double worst = 0.;
   for (double s : {0.3, 0.5})
     {
-      const double k_ref = std::sqrt(pi * s) * sent_geometry_factor(s);
+      const double k_ref = std::sqrt(pi * s) * sent_strip::geometry_factor(s);
       std::cout << "SENT a/W = " << s << ": K_ref = " << k_ref << "\n";
       for (const Mesh &m : {Mesh{20, 80, 0, false}, Mesh{40, 160, 0, true}, Mesh{80, 320, 0, true}, Mesh{40, 160, 1, false},
                             Mesh{40, 160, 2, true}})
@@ -246,7 +241,7 @@ TEST(GlobalSif, InclinedCentreCrackMatchesInfinitePlate)
 // these cells to hold the crack shut (K_I 86 % low).
 TEST(GlobalSif, SliverRowAlongTheCrackKeepsK)
 {
-  const double s = 0.5, k_ref = std::sqrt(pi * s) * sent_geometry_factor(s);
+  const double s = 0.5, k_ref = std::sqrt(pi * s) * sent_strip::geometry_factor(s);
   const double k_square = sent_with_sliver_row(1., 0.3).sif.at(0).k1;
   const double barely   = 0.9 * EnrichmentSettings().min_cut_fraction;
   for (const auto &[aspect, at] : {std::pair<double, double>{1e3, barely * (1e3 + 1.)}, {1e4, 0.3}})
