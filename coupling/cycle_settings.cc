@@ -34,6 +34,11 @@ namespace pumpd::coupling
                       "No growth up to lambda = this lambda_c: the run stops (the load is too small); at least the "
                       "first load factor.",
                       dealii::Patterns::Double(0.05, 100.));
+    prm.add_parameter("Onset resolution", exchange.onset_resolution,
+                      "The load the cycle reports at an exchange is the onset of growth in the box (the lowest "
+                      "lambda / lambda_c at which its crack leaves the tip), bracketed this closely by bisection "
+                      "between the box's states; at most the load increment.",
+                      dealii::Patterns::Double(1e-4, 1.));
     prm.add_parameter("Maximum advance", exchange.max_advance, "da_max: the longest crack advance per exchange [m].",
                       dealii::Patterns::Double(1e-300));
     prm.add_parameter("Minimum advance", exchange.min_advance,

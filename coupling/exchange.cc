@@ -1,6 +1,8 @@
 #include "exchange.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <iomanip>
 #include <limits>
 #include <optional>
@@ -82,6 +84,126 @@ namespace pumpd::coupling
           s.uy[i] *= lambda / lambda_s;
         }
     }
+
+    /// The box's PD states at given load factors: the boundary layer and the held places at
+    /// lambda lambda_c, the state relaxed, its tips' increments read off the damage.
+    class BoxStates
+    {
+    public:
+      BoxStates(const local::PdModel &model, const BoundaryTransfer &transfer, const std::vector<TipState> &tips,
+                const std::vector<std::vector<geometry::Polyline>> &faces, const PeridynamicsSettings &pd)
+        : model(model)
+        , transfer(transfer)
+        , tips(tips)
+        , layer(model)
+        , relax(model, pd.tolerance, pd.max_iterations)
+        , lambda_c(tips.front().critical_load_factor)
+        , extraction(tips.size())
+      {
+        for (std::size_t k = 0; k < tips.size(); ++k)
+          {
+            extraction[k].threshold = pd.crack_damage;
+            extraction[k].horizon   = pd.horizon;
+            if (!faces.empty())
+              extraction[k].faces = faces[k];
+          }
+      }
+
+      /// The undamaged box at lambda (the crack's bonds broken), before its relaxation.
+      local::State start(double lambda) const
+      {
+        local::State s = model.initial_state();
+        transfer.start(lambda * lambda_c, s);
+        return s;
+      }
+
+      /// Relaxes s, predicted from the equilibrium `before` at lambda_s, at lambda.
+      local::RelaxationResult relaxed(const std::optional<Equilibrium> &before, double lambda_s, double lambda,
+                                      local::State &s, ExchangeOutcome &r)
+      {
+        const auto t = Clock::now();
+        predict(model, before, lambda_s, lambda, s);
+        transfer.apply(lambda * lambda_c, layer);
+        layer.apply(s, 1.);
+        transfer.hold(lambda * lambda_c, s);
+        const auto result = relax.solve(s);
+        local::check_finite(model, s);
+        r.iterations += result.iterations;
+        r.unrelaxed += result.converged ? 0 : 1;
+        r.node_steps += double(result.iterations) * double(model.nodes().size());
+        r.seconds_pd += seconds_since(t);
+        return result;
+      }
+
+      /// Per tip, its increment in s (throws CrackBranching).
+      std::vector<CrackIncrement> increments(const local::State &s, ExchangeOutcome &r) const
+      {
+        const auto                  t      = Clock::now();
+        const DamageField           damage = damage_field(model, s);
+        std::vector<CrackIncrement> result;
+        for (std::size_t k = 0; k < tips.size(); ++k)
+          result.push_back(extract_crack(damage, tips[k].position, tips[k].direction, extraction[k]));
+        r.seconds_extraction += seconds_since(t);
+        return result;
+      }
+
+      const local::PdModel &model;
+
+    private:
+      const BoundaryTransfer          &transfer;
+      const std::vector<TipState>     &tips;
+      local::BoundaryLayer             layer;
+      const local::DynamicRelaxation   relax;
+      const double                     lambda_c;
+      std::vector<ExtractionSettings>  extraction;
+    };
+
+    bool any_grew(const std::vector<CrackIncrement> &increments)
+    {
+      return std::any_of(increments.begin(), increments.end(), [](const auto &i) { return i.path.size() > 1; });
+    }
+
+    /// The onset of growth (exchange.h): the bracket (quiet, grows_at] of the ladder refined by
+    /// bisection from the quiet equilibrium; without a quiet state of the ladder, states of the
+    /// undamaged box one load increment apart below its first one find it.
+    double growth_onset(BoxStates &box, std::optional<Equilibrium> quiet, double grows_at, double load_increment,
+                        double resolution, ExchangeOutcome &r, std::ostream &out, const std::string &unit)
+    {
+      const auto probe = [&](local::State &s, const std::optional<Equilibrium> &from, double lambda) {
+        const auto relaxed = box.relaxed(std::nullopt, from ? from->lambda : lambda, lambda, s, r);
+        ++r.onset_states;
+        bool grew = true;
+        try
+          {
+            grew = any_grew(box.increments(s, r));
+          }
+        catch (const CrackBranching &)
+          {
+          }
+        out << "    PD at " << std::setprecision(4) << lambda << " " << unit << ": " << relaxed.iterations
+            << " DR iterations -> onset " << (grew ? "above" : "below") << "\n"
+            << std::setprecision(6);
+        return grew;
+      };
+      for (double lambda = grows_at - load_increment; !quiet && lambda >= 0.05 - 1e-12; lambda -= load_increment)
+        {
+          local::State s = box.start(lambda);
+          if (probe(s, std::nullopt, lambda))
+            grows_at = lambda;
+          else
+            quiet = Equilibrium{std::move(s), lambda};
+        }
+      while (quiet && grows_at - quiet->lambda > resolution * (1. + 1e-9))
+        {
+          const double lambda = 0.5 * (quiet->lambda + grows_at);
+          local::State s      = quiet->state;
+          if (probe(s, quiet, lambda))
+            grows_at = lambda;
+          else
+            quiet = Equilibrium{std::move(s), lambda};
+        }
+      return grows_at;
+    }
   } // namespace
 
   ExchangeOutcome run_exchange(const local::PdModel &model, const BoundaryTransfer &transfer,
@@ -92,59 +214,35 @@ namespace pumpd::coupling
                                const PeridynamicsSettings &pd, std::ostream &out, const std::string &unit,
                                double advance_scale)
   {
-    // Per tip: its trace ends on the other cracks' faces.
-    std::vector<ExtractionSettings> extraction(tips.size());
-    for (std::size_t k = 0; k < tips.size(); ++k)
-      {
-        extraction[k].threshold = pd.crack_damage;
-        extraction[k].horizon   = pd.horizon;
-        if (!faces.empty())
-          extraction[k].faces = faces[k];
-      }
-    local::BoundaryLayer           layer(model);
-    const local::DynamicRelaxation relax(model, pd.tolerance, pd.max_iterations);
-    const double                   lambda_c = tips.front().critical_load_factor;
+    BoxStates box(model, transfer, tips, faces, pd);
 
     ExchangeOutcome r;
     local::State   &s      = r.state;
-    s                      = model.initial_state();
     double          lambda = controller.start();
-    transfer.start(lambda * lambda_c, s);
+    s                      = box.start(lambda);
     local::State               saved        = s; // the state a repeat starts from
     double                     saved_lambda = lambda, state_lambda = lambda;
     std::optional<Equilibrium> before; // the equilibrium before `saved`
+    std::optional<Equilibrium> quiet;  // the last equilibrium before the crack first grew
+    double grows_at = std::numeric_limits<double>::quiet_NaN(); // the first load factor it grew at
     for (;;)
       {
-        auto t = Clock::now();
-        predict(model, before, state_lambda, lambda, s);
-        transfer.apply(lambda * lambda_c, layer);
-        layer.apply(s, 1.);
-        transfer.hold(lambda * lambda_c, s);
-        const auto relaxed = relax.solve(s);
-        local::check_finite(model, s);
-        state_lambda = lambda;
-        r.iterations += relaxed.iterations;
+        const auto relaxed = box.relaxed(before, state_lambda, lambda, s, r);
+        state_lambda       = lambda;
         ++r.states;
-        r.unrelaxed += relaxed.converged ? 0 : 1;
-        r.node_steps += double(relaxed.iterations) * double(model.nodes().size());
-        r.seconds_pd += seconds_since(t);
-
-        t = Clock::now();
-        const DamageField damage = damage_field(model, s);
-        r.increments.clear();
-        r.reaches.clear();
         try
           {
-            for (std::size_t k = 0; k < tips.size(); ++k)
-              r.increments.push_back(extract_crack(damage, tips[k].position, tips[k].direction, extraction[k]));
+            r.increments = box.increments(s, r);
           }
         catch (const CrackBranching &e)
           {
             r.branching = e.what();
+            r.increments.clear();
+            break;
           }
-        r.seconds_extraction += seconds_since(t);
-        if (!r.branching.empty())
-          break;
+        r.reaches.clear();
+        if (std::isnan(grows_at) && any_grew(r.increments))
+          grows_at = lambda;
         std::size_t farthest = 0;
         for (std::size_t k = 1; k < tips.size(); ++k)
           if (r.increments[k].length() / allowed[k] > r.increments[farthest].length() / allowed[farthest])
@@ -169,7 +267,9 @@ namespace pumpd::coupling
               before = Equilibrium{saved, saved_lambda};
             saved        = s;
             saved_lambda = lambda;
-            lambda       = controller.load_factor();
+            if (std::isnan(grows_at))
+              quiet = Equilibrium{s, lambda};
+            lambda = controller.load_factor();
           }
         else if (r.decision == ExchangeController::Decision::repeat)
           {
@@ -182,6 +282,9 @@ namespace pumpd::coupling
           break;
       }
     r.load_factor = lambda;
+    if (r.branching.empty() && !std::isnan(grows_at))
+      r.onset_load_factor = growth_onset(box, std::move(quiet), grows_at, controller.settings().load_increment,
+                                         controller.settings().onset_resolution, r, out, unit);
     return r;
   }
 } // namespace pumpd::coupling

@@ -5,11 +5,18 @@
 // largest advance relative to its allowed advance, so the box's tips grow at one load. Each state
 // starts from the secant through the last two equilibria of the exchange (first-order
 // continuation in the load factor).
+// The onset of growth is the lowest load factor at which a tip's trace leaves it (an increment
+// longer than zero), the criterion of full PD's first growth: bracketed by the ladder's states
+// and refined by bisection to the settings' onset resolution, with states that the ladder does
+// not go on from (its path is the same with or without them). It is the load the cycle reports:
+// the box's boundary layer holds the global displacement of the crack before its increment, so
+// the crack needs more load to run the increment than to start it.
 #pragma once
 
 #include <cstddef>
 #include <functional>
 #include <iosfwd>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -27,8 +34,10 @@ namespace pumpd::coupling
     ExchangeController::Decision decision = ExchangeController::Decision::raise;
     std::string                  branching;         ///< the ridge split there (refused); "" otherwise
     double                       load_factor = 0.;  ///< lambda / lambda_c of the last state
+    double                       onset_load_factor = std::numeric_limits<double>::quiet_NaN(); ///< lambda / lambda_c of the onset of growth; NaN without growth
     local::State                 state;             ///< the last PD state
     std::size_t                  states = 0, repeats = 0, iterations = 0;
+    std::size_t                  onset_states = 0;  ///< states that refined the onset
     std::size_t                  unrelaxed = 0;     ///< states not relaxed within the settings' max iterations
     double                       node_steps = 0.;   ///< sum of PD nodes x DR iterations
     double                       seconds_pd = 0., seconds_extraction = 0.;

@@ -16,6 +16,7 @@ namespace pumpd::coupling
                   "must be in [1e-6, Load increment]");
     require_range("Maximum load factor", s.max_load_factor, s.first_load_factor, 100.,
                   "must be in [First load factor, 100]");
+    require_range("Onset resolution", s.onset_resolution, 1e-4, s.load_increment, "must be in [1e-4, Load increment]");
     require_positive("Maximum advance", s.max_advance);
     require_range("Minimum advance", s.min_advance, 0., 0.5 * s.max_advance, "must be in [0, Maximum advance / 2]");
     require_range("Near distance", s.near_distance, 0., 1., "must be in [0, 1] m");

@@ -31,6 +31,7 @@ namespace pumpd::coupling
     double min_advance        = 0.004; ///< an advance below this is no growth [m]
     double near_distance      = 0.008; ///< closer to a hole or the outline: da_max / 2 [m]
     bool   start_below_accepted = false; ///< start an exchange at the last accepted lambda - dlambda
+    double onset_resolution   = 0.0125; ///< the onset of growth is bracketed this closely (exchange.h)
   };
 
   class ExchangeController
@@ -59,6 +60,7 @@ namespace pumpd::coupling
     Decision judge(double advance, double allowed, bool arrives = false);
     double   load_factor() const { return lambda; }
     double   increment() const { return dlambda; }
+    const ExchangeSettings &settings() const { return s; }
     /// Continue after a restart from the lambda of the last accepted exchange.
     void restore(double accepted_load_factor) { accepted = accepted_load_factor; }
 

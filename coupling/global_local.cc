@@ -35,14 +35,16 @@ namespace pumpd::coupling
     const char *load_steps_header =
       "exchange,lambda,load_factor,critical_load_factor,load,displacement,tip_x_m,tip_y_m,crack_length_m,K_I_Pa_sqrt_m,"
       "K_II_Pa_sqrt_m,advance_m,decision,pd_nodes,pd_substeps,pd_repeats,pd_iterations,dofs,seconds_global,"
-      "seconds_point_evaluation,seconds_pd,seconds_extraction,horizon_m,tip_end,kink_deg,predicted_kink_deg,crack";
+      "seconds_point_evaluation,seconds_pd,seconds_extraction,horizon_m,tip_end,kink_deg,predicted_kink_deg,crack,"
+      "onset_lambda,onset_load,pd_onset_substeps";
 
     void write_row(CsvFile &table, const ExchangeRecord &r)
     {
       table.row(r.exchange, r.lambda, r.load_factor, r.critical_load_factor, r.load, r.displacement, r.tip.x, r.tip.y,
                 r.crack_length, r.k1, r.k2, r.advance, r.decision, r.pd_nodes, r.substeps, r.repeats, r.pd_iterations,
                 r.dofs, r.seconds_global, r.seconds_point_evaluation, r.seconds_pd, r.seconds_extraction, r.horizon,
-                r.tip_end, r.kink * 180. / M_PI, r.predicted_kink * 180. / M_PI, r.crack);
+                r.tip_end, r.kink * 180. / M_PI, r.predicted_kink * 180. / M_PI, r.crack, r.onset_lambda, r.onset_load,
+                r.onset_substeps);
     }
 
     void write_boxes(CsvFile &table, const std::vector<geometry::Box> &boxes, std::size_t track)
@@ -87,6 +89,17 @@ namespace pumpd::coupling
             << "pumpd-metric coupling.global_dofs " << r.exchanges.back().dofs << "\n"
             << "pumpd-metric pd.dr_iterations_per_state " << iterations / std::max(1., states) << "\n";
       out << "pumpd-metric pd.unrelaxed_states " << unrelaxed << "\n";
+      // The loads the cycle predicts: the onset of growth at the first exchange that grew, and the largest.
+      double first_growth = std::numeric_limits<double>::quiet_NaN(), peak = first_growth;
+      for (const auto &e : r.exchanges)
+        if (e.advance > 0. && std::isfinite(e.onset_load))
+          {
+            first_growth = std::isnan(first_growth) ? e.onset_load : first_growth;
+            peak         = std::isnan(peak) ? e.onset_load : std::max(peak, e.onset_load);
+          }
+      if (!std::isnan(first_growth))
+        out << "pumpd-metric coupling.first_growth_load " << first_growth << "\n"
+            << "pumpd-metric coupling.peak_load " << peak << "\n";
       if (unrelaxed > 0.)
         std::cerr << "warning: " << unrelaxed << " of " << states
                   << " PD states did not relax within Relaxation max iterations: their damage, and the crack path "
@@ -683,6 +696,8 @@ namespace pumpd::coupling
           record.repeats            = outcome.repeats;
           record.lambda             = lambda;
           record.load_factor        = lambda / part.tip.critical_load_factor;
+          record.onset_lambda       = outcome.onset_load_factor * lead.tip.critical_load_factor;
+          record.onset_substeps     = outcome.onset_states;
           record.k1                 = part.tip.k1 * lambda;
           record.k2                 = part.tip.k2 * lambda;
           record.decision           = !outcome.branching.empty()     ? "branching" :
@@ -706,6 +721,11 @@ namespace pumpd::coupling
         {
           global.scale_to(part.record.lambda);
           std::tie(part.record.load, part.record.displacement) = global.report();
+          if (std::isfinite(part.record.onset_lambda))
+            {
+              global.scale_to(part.record.onset_lambda);
+              std::tie(part.record.onset_load, part.record.onset_displacement) = global.report();
+            }
         }
       // The exchange's load: the lowest at which a tip grew. A tip that grew within one load
       // increment of its own ladder above it grows too: its states cannot tell the two loads apart.
@@ -811,6 +831,7 @@ namespace pumpd::coupling
       record.decision             = "lefm";
       record.load_factor          = 1.;
       record.lambda               = tip.critical_load_factor;
+      record.onset_lambda         = tip.critical_load_factor;
       record.k1                   = tip.k1 * record.lambda;
       record.k2                   = tip.k2 * record.lambda;
     }
@@ -823,12 +844,12 @@ namespace pumpd::coupling
           result.exchanges.push_back(part.record);
           write_row(steps, part.record);
         }
-      // The exchange's load (grow() left the global solution there) and the tip that grew first.
+      // The onset of growth of the tip that grew first: the load at which the crack starts to grow.
       for (const auto &part : parts)
         if (part.grows)
           {
-            const auto [load, displacement] = global.report();
-            recorder.load_displacement(n, global.load_factor(), load, displacement, crack_length(),
+            const auto &r = part.record;
+            recorder.load_displacement(n, r.onset_lambda, r.onset_load, r.onset_displacement, crack_length(),
                                        end_vertex(part.track));
             break;
           }

@@ -30,6 +30,7 @@
 
 #include <cstddef>
 #include <iosfwd>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -84,6 +85,10 @@ namespace pumpd::coupling
     double          load_factor          = 0.; ///< lambda / lambda_c
     double          critical_load_factor = 0.; ///< lambda_c: G = G_c at the tip
     double          load = 0., displacement = 0.; ///< the scene's report at lambda
+    /// The onset of growth in the box (exchange.h; the tip's lambda_c for an LEFM increment), the
+    /// scene's report there; NaN where the tip did not grow.
+    double onset_lambda = std::numeric_limits<double>::quiet_NaN(), onset_load = onset_lambda,
+           onset_displacement = onset_lambda;
     geometry::Point tip;
     double          crack_length = 0., k1 = 0., k2 = 0.; ///< at lambda, before the increment
     double          advance = 0.;                        ///< [m]
@@ -93,6 +98,7 @@ namespace pumpd::coupling
     std::string     decision;                            ///< accept | truncate | waits | lefm | ...
     geometry::Box   box;
     std::size_t     pd_nodes = 0, pd_iterations = 0, substeps = 0, repeats = 0;
+    std::size_t     onset_substeps = 0; ///< PD states that refined the onset
     std::size_t     unrelaxed = 0; ///< PD states not relaxed within Relaxation max iterations
     unsigned int    dofs = 0, enriched_dofs = 0;
     double          seconds_global = 0., seconds_point_evaluation = 0., seconds_pd = 0., seconds_extraction = 0.;

@@ -137,11 +137,11 @@ namespace pumpd::coupling
       if (scene.output_directory.empty())
         return;
       std::filesystem::create_directories(scene.output_directory);
-      CsvFile csv(scene.output_directory + "/nucleation.csv", "crack,site,vertex,x_m,y_m,lambda,lambda_over_lambda_i");
+      CsvFile csv(scene.output_directory + "/nucleation.csv", "crack,site,vertex,x_m,y_m,lambda,lambda_over_lambda_i,onset_lambda");
       for (std::size_t c = 0; c < cracks.size(); ++c)
         for (std::size_t k = 0; k < cracks[c].path.size(); ++k)
           csv.row(c + 1, numbers[c], k, cracks[c].path[k].x, cracks[c].path[k].y, cracks[c].load_factor,
-                  cracks[c].load_factor / cracks[c].site.load_factor);
+                  cracks[c].load_factor / cracks[c].site.load_factor, cracks[c].onset_load_factor);
     }
   } // namespace
 
@@ -265,7 +265,8 @@ namespace pumpd::coupling
             geometry::to_text(at, 4) + " (the scene does not break)");
         return crack;
       }
-    crack.load_factor = outcome.load_factor * site.load_factor;
+    crack.load_factor       = outcome.load_factor * site.load_factor;
+    crack.onset_load_factor = outcome.onset_load_factor * site.load_factor;
     if (mouth)
       {
         auto path  = outcome.increments.front().path;
@@ -280,7 +281,8 @@ namespace pumpd::coupling
         crack.path.insert(crack.path.end(), ahead.begin(), ahead.end());
       }
     out << "nucleation at site " << number << ": a crack of " << geometry::length(crack.path) << " m formed at lambda = "
-        << crack.load_factor << " (" << outcome.load_factor << " lambda_i): " << geometry::to_text(crack.path) << std::endl;
+        << crack.load_factor << " (" << outcome.load_factor << " lambda_i; its growth set in at "
+        << outcome.onset_load_factor << " lambda_i): " << geometry::to_text(crack.path) << std::endl;
     return crack;
   }
 

@@ -59,6 +59,7 @@ namespace pumpd::coupling
     geometry::Polyline path; ///< edge crack: mouth first, tip last; interior: tip, the flaw's ends, tip
     InitiationSite     site;
     double             load_factor = 0.;  ///< lambda of the state that formed it
+    double             onset_load_factor = 0.; ///< lambda of the onset of its growth (exchange.h)
     geometry::Box      box;
     std::size_t        pd_nodes = 0, states = 0, iterations = 0;
     std::optional<InvalidParameter> refusal; ///< why no crack formed at the site (then no path)

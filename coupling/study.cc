@@ -197,7 +197,8 @@ namespace pumpd::coupling
         fs::remove(fresh);
     }
 
-    void print_metrics(const TradeTable &t, std::ostream &out)
+    /// The study's figures; the loads named after the scene file's stem (loads.<stem>.*).
+    void print_metrics(const TradeTable &t, const std::string &scene_file, std::ostream &out)
     {
       const auto row = [&](const std::string &name) -> const TradeRow * {
         for (const auto &r : t.rows)
@@ -213,6 +214,14 @@ namespace pumpd::coupling
         out << "pumpd-metric trade.coupled_over_lefm_time " << cycle->record.wall_seconds / lefm->record.wall_seconds
             << "\npumpd-metric trade.lefm_vs_coupled_mean_dev_mm "
             << 1e3 * trade_distance(lefm->path, cycle->path).mean << "\n";
+      // The cycle's predicted loads (the onsets of growth in its boxes) against full PD's and LEFM's.
+      const std::string loads = "pumpd-metric loads." + fs::path(scene_file).stem().string() + ".";
+      const auto        rel   = [](double a, double b) { return a / b - 1.; };
+      if (cycle && full && std::isfinite(cycle->first_growth_load) && std::isfinite(full->first_growth_load))
+        out << loads << "first_growth_vs_fullpd_rel " << rel(cycle->first_growth_load, full->first_growth_load) << "\n"
+            << loads << "peak_vs_fullpd_rel " << rel(cycle->peak_load, full->peak_load) << "\n";
+      if (cycle && lefm && std::isfinite(cycle->first_growth_load) && std::isfinite(lefm->first_growth_load))
+        out << loads << "first_growth_vs_lefm_rel " << rel(cycle->first_growth_load, lefm->first_growth_load) << "\n";
       if (t.recommended && t.finest)
         out << "pumpd-metric study.recommended_mean_vs_finest_mm " << 1e3 * t.rows[*t.recommended].from_finest->mean
             << "\n";
@@ -352,7 +361,7 @@ namespace pumpd::coupling
         << "pumpd-metric study.runs " << study.size() << "\n"
         << "pumpd-metric study.reused " << study.reused() << "\n"
         << "pumpd-metric study.seconds " << study.seconds() << "\n";
-    print_metrics(table, out);
+    print_metrics(table, scene_file, out);
     out << "study: recommended: " << recommendation(table) << std::endl;
   }
 } // namespace pumpd::coupling
