@@ -147,9 +147,8 @@ namespace pumpd::coupling
         return result;
       }
 
-      const local::PdModel &model;
-
     private:
+      const local::PdModel            &model;
       const BoundaryTransfer          &transfer;
       const std::vector<TipState>     &tips;
       local::BoundaryLayer             layer;
@@ -181,7 +180,8 @@ namespace pumpd::coupling
           {
           }
         out << "    PD at " << std::setprecision(4) << lambda << " " << unit << ": " << relaxed.iterations
-            << " DR iterations -> onset " << (grew ? "above" : "below") << "\n"
+            << " DR iterations -> " << (grew ? "grows: the onset lies at or below" : "no growth: the onset lies above")
+            << "\n"
             << std::setprecision(6);
         return grew;
       };
