@@ -242,7 +242,11 @@ namespace pumpd::coupling
           }
         r.reaches.clear();
         if (std::isnan(grows_at) && any_grew(r.increments))
-          grows_at = lambda;
+          {
+            grows_at = lambda;
+            if (r.states > 1) // the state before it, relaxed without growth
+              quiet = Equilibrium{saved, saved_lambda};
+          }
         std::size_t farthest = 0;
         for (std::size_t k = 1; k < tips.size(); ++k)
           if (r.increments[k].length() / allowed[k] > r.increments[farthest].length() / allowed[farthest])
@@ -267,9 +271,7 @@ namespace pumpd::coupling
               before = Equilibrium{saved, saved_lambda};
             saved        = s;
             saved_lambda = lambda;
-            if (std::isnan(grows_at))
-              quiet = Equilibrium{s, lambda};
-            lambda = controller.load_factor();
+            lambda       = controller.load_factor();
           }
         else if (r.decision == ExchangeController::Decision::repeat)
           {
