@@ -316,7 +316,10 @@ TEST(CouplingExtremes, CrackReachesTheOutline)
 // tip, clipped to the top edge, come to take in the load point, which they hold to the global
 // displacement (held_places, boundary_transfer.h). The crack grows on in such a box and stays
 // clear of the held place: its nodes within a horizon of the point and the linear bonds a horizon
-// beyond them do not break.
+// beyond them do not break. Where the last ligament is narrower than 3 horizons of the finest box,
+// LEFM grows it (global_local.h, step 4) and may end on the outline at the point; whether the last
+// PD increment leaves it that narrow depends on the last bits of the PD states (another CPU's
+// vector width), so the end is checked only where a box grew the crack to it.
 TEST(CouplingExtremes, BoxThatTakesInTheLoadPointHoldsItToTheGlobalDisplacement)
 {
   const auto r = run(deep_crack("", 0.254));
@@ -330,7 +333,8 @@ TEST(CouplingExtremes, BoxThatTakesInTheLoadPointHoldsItToTheGlobalDisplacement)
         EXPECT_GT(geometry::norm(load - e.tip), 2. * e.horizon) << "exchange " << e.exchange;
       }
   EXPECT_TRUE(grew_holding_it) << r.stop_reason;
-  EXPECT_GT(geometry::norm(load - r.path.back()), 2. * r.exchanges.back().horizon);
+  if (r.exchanges.back().decision != "lefm")
+    EXPECT_GT(geometry::norm(load - r.path.back()), 2. * r.exchanges.back().horizon);
   EXPECT_GT(r.path.back().y, 0.19);
 }
 
