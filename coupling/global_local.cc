@@ -188,6 +188,14 @@ namespace pumpd::coupling
       /// The horizon of this tip's box (resolution.h), chosen by the path ahead of it: the PD
       /// settings, the box and the advance follow it.
       void resolve(TipExchange &part);
+      /// True at a tip of an initial crack that has not grown.
+      bool initial_tip(geometry::Point position) const
+      {
+        const double tolerance = crack_tolerance(scene);
+        return std::any_of(scene.cracks.begin(), scene.cracks.end(), [&](const geometry::Polyline &c) {
+          return norm(c.front() - position) <= tolerance || norm(c.back() - position) <= tolerance;
+        });
+      }
       /// The tips (indices into parts) that share each box: tips within half a box side of each
       /// other, the one with the smallest lambda_c first (it leads: the box's load is in its
       /// lambda_c); a tip whose ligament no box resolves is alone.
@@ -566,7 +574,18 @@ namespace pumpd::coupling
           }
         return c;
       };
-      track.halvings         = horizon_halvings(s.cycle.resolution, s.pd.horizon, clearance);
+      track.halvings = horizon_halvings(s.cycle.resolution, s.pd.horizon, clearance);
+      if (initial_tip(part.tip.position))
+        {
+          const auto &crack = cracks[part.track / 2];
+          const double kink = part.record.predicted_kink;
+          const int    k    = std::max(
+            kink_halvings(s.cycle.resolution, s.pd.horizon, kink, crack.length() / double(crack.tips().size())),
+            field_kink_halvings(s.cycle.resolution, s.pd.horizon, kink,
+                                [&](double r) { return global.hoop_direction(part.tip, r); }));
+          if (k > 0)
+            track.halvings = std::max(track.halvings, k);
+        }
       track.pd.horizon       = track.length_scale() * s.pd.horizon;
       part.record.horizon    = track.pd.horizon;
     }

@@ -266,6 +266,42 @@ namespace pumpd::coupling
     return u;
   }
 
+  double GlobalProblem::hoop_direction(const TipState &tip, double r)
+  {
+    const double pi = std::acos(-1.), step = 0.02 * r, faces = 5. * pi / 180.;
+    const auto  &m  = scene.material;
+    // Lame's constants of the plane problem: plane stress takes lambda* = 2 lambda mu / (lambda + 2 mu).
+    const double mu     = m.youngs_modulus / (2. * (1. + m.poisson_ratio));
+    const double lambda_3d = m.youngs_modulus * m.poisson_ratio / ((1. + m.poisson_ratio) * (1. - 2. * m.poisson_ratio));
+    const double lame   = m.plane_strain ? lambda_3d : 2. * lambda_3d * mu / (lambda_3d + 2. * mu);
+    const geometry::Point d = tip.direction, n{-d.y, d.x};
+    std::vector<double>          angles;
+    std::vector<geometry::Point> points;
+    for (double theta = -pi + faces; theta < pi - faces; theta += 0.002)
+      {
+        angles.push_back(theta);
+        const geometry::Point x = tip.position + r * (std::cos(theta) * d + std::sin(theta) * n);
+        for (const geometry::Point e : {geometry::Point{step, 0.}, geometry::Point{-step, 0.},
+                                        geometry::Point{0., step}, geometry::Point{0., -step}})
+          points.push_back(x + e);
+      }
+    const auto u    = displacement_per_unit_load(points);
+    double     best = -std::numeric_limits<double>::infinity(), at = 0.;
+    for (std::size_t k = 0; k < angles.size(); ++k)
+      {
+        const double ux_x = (u[4 * k].x - u[4 * k + 1].x) / (2. * step), uy_x = (u[4 * k].y - u[4 * k + 1].y) / (2. * step);
+        const double ux_y = (u[4 * k + 2].x - u[4 * k + 3].x) / (2. * step),
+                     uy_y = (u[4 * k + 2].y - u[4 * k + 3].y) / (2. * step);
+        const double sxx = lame * (ux_x + uy_y) + 2. * mu * ux_x, syy = lame * (ux_x + uy_y) + 2. * mu * uy_y;
+        const double sxy = mu * (ux_y + uy_x);
+        const double phi = angles[k] + std::atan2(d.y, d.x), c = std::cos(phi), s = std::sin(phi);
+        const double hoop = sxx * s * s + syy * c * c - 2. * sxy * s * c;
+        if (hoop > best)
+          best = hoop, at = angles[k];
+      }
+    return at;
+  }
+
   void GlobalProblem::scale_to(double new_lambda)
   {
     problem->scale_solution(new_lambda / lambda);

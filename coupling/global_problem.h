@@ -115,6 +115,13 @@ namespace pumpd::coupling
     /// batched point evaluation). Call after solve() and before scale_to().
     std::vector<geometry::Point> displacement_per_unit_load(const std::vector<geometry::Point> &points);
 
+    /// The direction theta [rad] from the tip's direction, within (-pi, pi) less 5 degrees either
+    /// side of the crack faces, of the largest hoop stress sigma_tt of the solution on the circle
+    /// of radius r about the tip (sigma from the displacement gradient by central differences of
+    /// step r / 50, each point on its own side of the crack): where the plate's own field, beyond
+    /// K_I and K_II, would turn a crack that leaves the tip over the length r.
+    double hoop_direction(const TipState &tip, double r);
+
     /// The solution at load factor lambda from here on (until the next solve).
     void scale_to(double lambda);
     double load_factor() const { return lambda; }

@@ -373,6 +373,10 @@ namespace pumpd::coupling
     cracked.cracks.clear();
     for (const auto &c : initial)
       cracked.cracks.push_back(c.path);
-    return run_global_local(cracked, settings, out);
+    // A nucleated crack runs along the direction its own PD damage took: its first growth goes on
+    // from it and is no kink from a crack the scene gave (resolution.h).
+    GlobalLocalSettings growth                = settings;
+    growth.cycle.resolution.kink_tolerance = 0.;
+    return run_global_local(cracked, growth, out);
   }
 } // namespace pumpd::coupling

@@ -6,6 +6,7 @@
 #include <cctype>
 #include <filesystem>
 #include <map>
+#include <set>
 #include <sstream>
 #include <vector>
 
@@ -64,7 +65,41 @@ namespace pumpd::coupling
       return text.rfind(byte_order_mark, 0) == 0 ? text.substr(byte_order_mark.size()) : text;
     }
 
-    void check(const std::string &file, std::vector<std::string> &stack)
+    void check(const std::string &file, std::vector<std::string> &stack, std::set<std::string> &set);
+
+    /// The entries the lines of `text` (of `file`) set, and those of the files it includes, into
+    /// `set`; each entry once per file.
+    void walk(const std::string &text, const std::string &file, std::vector<std::string> &stack,
+              std::set<std::string> &set)
+    {
+      std::vector<std::string>   section;
+      std::map<std::string, int> set_at; // "Section/Sub/entry" -> its line
+      for (const auto &[line, number] : logical_lines(text))
+        {
+          if (const auto name = starting(line, "subsection"); !name.empty())
+            section.push_back(name);
+          else if ((line == "end" || line == "END") && !section.empty())
+            section.pop_back();
+          else if (const auto included = starting(line, "include"); !included.empty())
+            check(included, stack, set);
+          else if (const auto entry = starting(line, "set"); !entry.empty())
+            {
+              std::string path;
+              for (const auto &s : section)
+                path += s + "/";
+              path += trim(entry.substr(0, entry.find('=')));
+              const auto [at, fresh] = set_at.emplace(path, number);
+              if (!fresh)
+                throw InvalidParameter(path, "set twice in " + file,
+                                       "lines " + std::to_string(at->second) + " and " + std::to_string(number) +
+                                         ": each entry once per file (a file may set again an entry of a file it "
+                                         "includes)");
+              set.insert(path);
+            }
+        }
+    }
+
+    void check(const std::string &file, std::vector<std::string> &stack, std::set<std::string> &set)
     {
       const std::string name = stack.empty() ? "scene file" : "include";
       const std::string what = " (the path of a .prm file, relative to the working directory)";
@@ -86,44 +121,30 @@ namespace pumpd::coupling
                                  "includes itself, directly or through the files it includes: a file may include "
                                  "others, but not one that includes it");
       stack.push_back(canonical);
-
-      std::vector<std::string>   section;
-      std::map<std::string, int> set_at; // "Section/Sub/entry" -> its line
-      for (const auto &[line, number] : logical_lines(*text))
-        {
-          if (const auto name = starting(line, "subsection"); !name.empty())
-            section.push_back(name);
-          else if ((line == "end" || line == "END") && !section.empty())
-            section.pop_back();
-          else if (const auto included = starting(line, "include"); !included.empty())
-            check(included, stack);
-          else if (const auto entry = starting(line, "set"); !entry.empty())
-            {
-              std::string path;
-              for (const auto &s : section)
-                path += s + "/";
-              path += trim(entry.substr(0, entry.find('=')));
-              const auto [at, fresh] = set_at.emplace(path, number);
-              if (!fresh)
-                throw InvalidParameter(path, "set twice in " + file,
-                                       "lines " + std::to_string(at->second) + " and " + std::to_string(number) +
-                                         ": each entry once per file (a file may set again an entry of a file it "
-                                         "includes)");
-            }
-        }
+      walk(*text, file, stack, set);
       stack.pop_back();
     }
   } // namespace
 
-  void check_parameter_file(const std::string &file)
+  std::set<std::string> check_parameter_file(const std::string &file)
   {
     std::vector<std::string> stack;
-    check(file, stack);
+    std::set<std::string>    set;
+    check(file, stack, set);
+    return set;
   }
 
-  void parse_parameter_file(dealii::ParameterHandler &prm, const std::string &file)
+  std::set<std::string> entries_set_in(const std::string &text)
   {
-    check_parameter_file(file);
+    std::vector<std::string> stack;
+    std::set<std::string>    set;
+    walk(without_byte_order_mark(text), "the scene text", stack, set);
+    return set;
+  }
+
+  std::set<std::string> parse_parameter_file(dealii::ParameterHandler &prm, const std::string &file)
+  {
+    auto set = check_parameter_file(file);
     const std::string text = file_contents(file).value_or("");
     if (text.rfind(byte_order_mark, 0) == 0)
       {
@@ -132,5 +153,6 @@ namespace pumpd::coupling
       }
     else
       prm.parse_input(file);
+    return set;
   }
 } // namespace pumpd::coupling

@@ -8,6 +8,7 @@
 
 #include "parameter_file.h"
 #include "parameters.h"
+#include "scene_lengths.h"
 #include "text.h"
 
 namespace pumpd::coupling
@@ -22,17 +23,18 @@ namespace pumpd::coupling
     Parameters               p;
     dealii::ParameterHandler prm;
     p.add_parameters(prm);
-    parse_parameter_file(prm, file);
-    return of_handler(prm);
+    auto set = parse_parameter_file(prm, file);
+    return of_handler(prm, std::move(set));
   }
 
-  ParameterTable ParameterTable::of_handler(const dealii::ParameterHandler &prm)
+  ParameterTable ParameterTable::of_handler(const dealii::ParameterHandler &prm, std::set<std::string> set)
   {
     std::stringstream printed;
     prm.print_parameters(printed, dealii::ParameterHandler::ShortPRM);
 
     // The printed file, read back: "subsection <name>", "set <entry> = <value>", "end".
     ParameterTable           table;
+    table.set_entries = std::move(set);
     std::vector<std::string> sections;
     std::string              line;
     while (std::getline(printed, line))
@@ -79,6 +81,7 @@ namespace pumpd::coupling
       if (p == path)
         {
           v = value;
+          set_entries.insert(path);
           return;
         }
     throw std::out_of_range("no parameter " + path);
@@ -109,7 +112,7 @@ namespace pumpd::coupling
     std::vector<std::string> open; // the sections entered
     for (const auto &[path, value] : entries)
       {
-        if (path.rfind(prefix, 0) != 0 || path.rfind(omitted, 0) == 0)
+        if (path.rfind(prefix, 0) != 0 || path.rfind(omitted, 0) == 0 || (is_scene_length(path) && !is_set(path)))
           continue;
         std::vector<std::string> wanted;
         std::stringstream        parts(section_of(path));

@@ -56,6 +56,11 @@ namespace pumpd::coupling
   /// The same from the text of a scene file (tests).
   Parameters parse_parameters(const std::string &text);
 
+  /// Under Scene/Length defaults = scene, every length entry the scene file did not set
+  /// (scene_lengths.h) derived from the scene's lengths; with `out`, a line that gives them and the
+  /// lengths they come from. run() and a study's planning call it before check_against_scene.
+  void derive_lengths(Parameters &parameters, const Scene &scene, std::ostream *out = nullptr);
+
   /// The checks of the settings against the built scene that no single section can make (the
   /// hole margin against the body, the tip enrichment radius against the boundary, the refined
   /// mesh against Maximum cells, the output against the free disk: output_volume.h):

@@ -34,6 +34,15 @@ namespace pumpd::coupling
                       "cracks, every hole the doubled box reaches holds as many within its radius, and the doubled "
                       "box fits into the body.",
                       dealii::Patterns::Integer(0, 2));
+    prm.add_parameter("Kink tolerance", kink_tolerance,
+                      "eps [deg]: a tip that has not grown gets a box whose horizon is at most eps a / |theta_c| "
+                      "(eps in radians, theta_c the maximum hoop stress angle, a the crack's length, half of it for "
+                      "an interior crack): the first PD increment, a straight segment of 1.5 to 2 horizons, then "
+                      "lies within about eps of the kinked path's direction. 0: no such halving.",
+                      dealii::Patterns::Double(0., 30.));
+    prm.add_parameter("Maximum kink halvings", max_kink_halvings,
+                      "The horizon a kink asks for is at least the section Peridynamics' horizon / 2^this.",
+                      dealii::Patterns::Integer(0, 6));
     prm.leave_subsection();
   }
 
@@ -69,5 +78,27 @@ namespace pumpd::coupling
           return k;
       }
     return int(s.max_halvings);
+  }
+
+  int kink_halvings(const ResolutionSettings &s, double horizon, double kink, double crack_length)
+  {
+    const double tolerance = s.kink_tolerance * std::acos(-1.) / 180.;
+    const double error     = horizon * std::abs(kink) / crack_length;
+    if (s.rule != "clearance" || tolerance <= 0. || !(crack_length > 0.) || error <= tolerance)
+      return 0;
+    const double needed = std::ceil(std::log2(error / tolerance) - 1e-12);
+    return int(std::clamp(needed, 0., double(s.max_kink_halvings)));
+  }
+
+  int field_kink_halvings(const ResolutionSettings &s, double horizon, double kink,
+                          const std::function<double(double)> &hoop_direction)
+  {
+    const double tolerance = s.kink_tolerance * std::acos(-1.) / 180.;
+    if (s.rule != "clearance" || tolerance <= 0. || std::abs(kink) <= tolerance)
+      return 0;
+    for (int k = 0; k < int(s.max_kink_halvings); ++k)
+      if (std::abs(hoop_direction(1.5 * std::ldexp(horizon, -k)) - kink) <= tolerance)
+        return k;
+    return int(s.max_kink_halvings);
   }
 } // namespace pumpd::coupling

@@ -77,6 +77,14 @@ namespace pumpd::coupling
                       "cracks. Empty: no crack; global-local and full PD start one where the material first fails "
                       "(section Initiation), LEFM growth lists where one would start and stops.",
                       Patterns::Anything());
+    prm.add_parameter("Length defaults", length_defaults,
+                      "scene: the length entries a scene file leaves unset (Peridynamics: Horizon; Global-local: Box "
+                      "size, Box margin, Maximum box size, Maximum and Minimum advance, Near distance; LEFM growth: "
+                      "Growth increment; Global: Tip enrichment radius, Refinement radius and trail) are derived from "
+                      "the scene's own lengths (README, \"Lengths\"; the run prints them); absolute: each entry's "
+                      "default, the lengths of the published Ingraffea decks (a beam 508 x 203 mm: horizon 4 mm, box "
+                      "32 mm, growth increment 4 mm). An entry the file sets is kept under either.",
+                      Patterns::Selection("scene|absolute"));
     prm.add_parameter("Output directory", output_directory,
                       "Where the results go (created if missing); empty: the run writes nothing.", Patterns::DirectoryName());
     prm.add_parameter("Reference path", reference_path,

@@ -91,6 +91,7 @@ namespace pumpd::coupling
     std::string initial_cracks;
     std::string report_load         = "lambda";
     std::string report_displacement = "";
+    std::string length_defaults     = "scene"; ///< scene | absolute (scene_lengths.h)
     std::string output_directory    = "out";
     std::string reference_path      = "";
     Material    material;

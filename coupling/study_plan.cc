@@ -54,6 +54,7 @@ namespace pumpd::coupling
             throw InvalidParameter("Type", run.method(), "a study compares methods that grow the scene's crack");
           const Scene  rebuilt = own_scene ? build_scene(run.parameters.scene) : Scene();
           const Scene &s       = own_scene ? rebuilt : scene;
+          derive_lengths(run.parameters, s);
           check_against_scene(run.parameters, s);
           if (run.method() != "lefm-growth")
             run.parameters.pd.material(s.material);

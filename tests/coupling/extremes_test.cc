@@ -36,6 +36,7 @@ namespace
     auto p = test::scene_file("tests/regression/ingraffea-case2-coarse.prm", name.empty() ? "" : "extremes_test_" + name);
     p.pd.horizon_over_spacing = 4;
     p.scene.reference_path    = "";
+    p.cycle.resolution.kink_tolerance = 0.; // no kink halving (resolution.h): the boxes are the clearance rule's
     if (!holes)
       p.scene.mesh_file = "meshes/ingraffea-beam.geo";
     return p;

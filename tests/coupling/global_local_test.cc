@@ -25,6 +25,7 @@ namespace
     auto p                          = test::scene_file("tests/regression/ingraffea-case2-coarse.prm", output);
     p.pd.horizon_over_spacing       = 4;
     p.cycle.max_exchanges           = exchanges;
+    p.cycle.resolution.kink_tolerance = 0.; // no kink halving (resolution.h): the boxes' horizons are the clearance rule's
     return p;
   }
 
@@ -143,6 +144,7 @@ TEST(GlobalLocal, ResumedRunWithDoubledBoxesMatchesTheUninterruptedOne)
     auto p                           = test::scene_file("tests/regression/ingraffea-case1-coarse.prm", output);
     p.cycle.max_exchanges            = exchanges;
     p.cycle.resolution.max_doublings = 1;
+    p.cycle.resolution.kink_tolerance = 0.; // the first box is the doubling's, not the kink's (resolution.h)
     return p;
   };
   const auto [a, b] = whole_and_resumed(doubled, "global_local_doubled", 4, 2);
@@ -217,6 +219,7 @@ TEST(GlobalLocal, ATipHalfAHorizonBelowAnotherCracksFaceJoinsIt)
   auto p                 = test::scene_file("prm/beam-t-junction.prm", "global_local_t_near");
   p.scene.initial_cracks = "0.1016,0; 0.1016,0.0444 | 0.07,0.0464; 0.13,0.0464";
   p.cycle.max_exchanges  = 2;
+  p.cycle.resolution.kink_tolerance = 0.; // the first box at the scene's horizon: its ridge reaches the face
   const auto r           = run(p);
   ASSERT_GE(r.exchanges.size(), 1u);
   EXPECT_EQ(r.exchanges[0].crack, 0u);
@@ -237,6 +240,7 @@ TEST(GlobalLocal, ADoubledBoxKeepsItsClearanceFromTheOtherCracks)
   auto p                           = test::scene_file("prm/beam-t-junction.prm", "");
   p.cycle.max_exchanges            = 1;
   p.cycle.resolution.max_doublings = 1;
+  p.cycle.resolution.kink_tolerance = 0.; // the first box is the clearance rule's, not the kink's
   const auto r                     = run(p);
   ASSERT_GE(r.exchanges.size(), 1u);
   EXPECT_EQ(r.exchanges[0].horizon, p.pd.horizon);

@@ -120,6 +120,15 @@ namespace
     std::ostringstream log;
     return coupling::run_global_local(scene, p.global_local_settings(), log).exchanges;
   }
+
+  /// The least advance an exchange accepts in a box of the record's horizon (global_local.cc): the
+  /// section's minimum advance (scaled with a coarser box), at most half the advance a finer box
+  /// allows.
+  double least_advance(const coupling::Parameters &p, const coupling::ExchangeRecord &e)
+  {
+    const double scale = e.horizon / p.pd.horizon;
+    return std::min(std::max(scale, 1.) * p.cycle.exchange.min_advance, 0.5 * scale * p.cycle.exchange.max_advance);
+  }
 } // namespace
 
 TEST(InclinedCrack, LefmGrowthGrowsBothTipsSymmetrically)
@@ -156,9 +165,12 @@ TEST(InclinedCrack, GlobalLocalGrowsBothTipsSymmetricallyWithTheHoopStressKink)
   for (const auto &e : r.exchanges)
     {
       EXPECT_EQ(e.decision, "accept") << "exchange " << e.exchange << ", tip end " << e.tip_end;
-      EXPECT_GE(e.advance, p.cycle.exchange.min_advance - 1e-9);
+      EXPECT_GE(e.advance, least_advance(p, e) - 1e-9);
       if (e.exchange == 0)
         {
+          // a = 10 mm, theta_c = -53 degrees: the first box's horizon is at most 3 degrees x a /
+          // |theta_c| = 0.57 mm (resolution.h), 4 mm / 2^3.
+          EXPECT_EQ(e.horizon, p.pd.horizon / 8.);
           EXPECT_LT(e.predicted_kink, -45. * degree); // K_II ~ K_I: theta_c ~ -53 degrees
           EXPECT_LT(e.kink, -30. * degree);
           kink_error = std::max(kink_error, std::abs(e.kink - e.predicted_kink) / degree);
@@ -166,7 +178,7 @@ TEST(InclinedCrack, GlobalLocalGrowsBothTipsSymmetricallyWithTheHoopStressKink)
     }
   const double a = asymmetry(r.path, scene.crack()) / p.pd.spacing();
   EXPECT_LT(a, 1.);
-  EXPECT_LT(kink_error, 15.);
+  EXPECT_LT(kink_error, 5.); // issue 41: the first kink at the default within 5 degrees of theta_c
   test::metric("cracks.inclined.asymmetry_over_h", a);
   test::metric("cracks.inclined.kink_err_deg", kink_error);
 }
@@ -179,6 +191,7 @@ TEST(InclinedCrack, CloseTipsShareOneBox)
   p.pd.horizon_over_spacing = 4;
   p.cycle.max_exchanges     = 1;
   p.scene.initial_cracks    = "-0.0035355,-0.0035355; 0.0035355,0.0035355";
+  p.cycle.resolution.kink_tolerance = 0.; // boxes of the scene's horizon, half a side (16 mm) wider than the crack
   const auto         scene  = coupling::build_scene(p.scene);
   std::ostringstream log;
   const auto         r = coupling::run_global_local(scene, p.global_local_settings(), log);

@@ -132,3 +132,25 @@ TEST(Resolution, ADoubledBoxReachesTheHolesOfTwiceTheSideAndMustFitTheBody)
   EXPECT_TRUE(policy.fits(4.));
   EXPECT_FALSE(policy.fits(8.));
 }
+
+// The kink's horizon (resolution.h): delta_k <= eps a / |theta_c|, eps = 3 degrees.
+TEST(Resolution, AKinkingTipHalvesTheHorizonUntilTheFirstChordHoldsTheKink)
+{
+  coupling::ResolutionSettings s; // kink tolerance 3 degrees, at most 3 kink halvings
+  const double                 degree = std::acos(-1.) / 180.;
+  // The inclined crack: a = 10 mm, theta_c = -53 degrees: 3 / 53 x 10 mm = 0.57 mm, so 4 mm / 8.
+  EXPECT_EQ(coupling::kink_halvings(s, 0.004, -53. * degree, 0.010), 3);
+  // Ingraffea's Case II: a = 25.4 mm, theta_c = -12.7 degrees: 6.0 mm, the section's 4 mm holds.
+  EXPECT_EQ(coupling::kink_halvings(s, 0.004, -12.7 * degree, 0.0254), 0);
+  // Just beyond a bound: delta |theta_c| / a = 2 x 1.01 eps asks for two halvings.
+  EXPECT_EQ(coupling::kink_halvings(s, 0.004, 2.02 * 3. * degree, 0.004), 2);
+  EXPECT_EQ(coupling::kink_halvings(s, 0.004, 2. * 3. * degree, 0.004), 1);
+  // A straight crack, no tolerance, the fixed rule: none; and never more than the maximum.
+  EXPECT_EQ(coupling::kink_halvings(s, 0.004, 0., 0.01), 0);
+  EXPECT_EQ(coupling::kink_halvings(s, 0.004, -1.2, 0.0001), 3);
+  s.kink_tolerance = 0.;
+  EXPECT_EQ(coupling::kink_halvings(s, 0.004, -53. * degree, 0.010), 0);
+  s.kink_tolerance = 3.;
+  s.rule           = "fixed";
+  EXPECT_EQ(coupling::kink_halvings(s, 0.004, -53. * degree, 0.010), 0);
+}

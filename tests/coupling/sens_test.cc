@@ -15,7 +15,7 @@
 // PD crack leaves the tip where its bonds fail, one to two horizons out, and there the plate's own
 // field (beyond K_I, K_II and the T-stress) has turned that direction by several degrees towards
 // the horizontal. The test also measures the hoop stress of the global solution on the circle of
-// the increment's length (sigma_tt from the displacement gradient by central differences) and
+// the increment's length (GlobalProblem::hoop_direction) and
 // holds the PD increment to its direction (5 degrees), LEFM to theta_c (3 degrees), the PD
 // increment to theta_c within 12 degrees; kink_err_deg reports the worse of the two against
 // theta_c. The studies (ctest -L study) measure the PD kink as the horizon shrinks against the
@@ -45,43 +45,6 @@ namespace
   const std::string scene_file = "prm/sens.prm";
 
   bool accepted(const coupling::ExchangeRecord &e) { return e.decision == "accept" || e.decision == "truncate"; }
-
-  /// The angle theta (from the tip direction, in (-pi, pi) less 5 degrees either side of the crack
-  /// faces) at which the hoop stress sigma_tt of the solved problem is largest on the circle of
-  /// radius r about the tip: plane strain, the displacement gradient by central differences of
-  /// step r / 50 (every point on its own side of the crack).
-  double largest_hoop_stress(coupling::GlobalProblem &global, const coupling::TipState &tip,
-                             const coupling::Material &material, double r)
-  {
-    const double          pi = std::acos(-1.), e = 0.02 * r;
-    const double          E = material.youngs_modulus, nu = material.poisson_ratio;
-    const double          mu = E / (2. * (1. + nu)), lambda = E * nu / ((1. + nu) * (1. - 2. * nu));
-    const geometry::Point d = tip.direction, n{-d.y, d.x};
-    std::vector<double>          angles;
-    std::vector<geometry::Point> points;
-    for (double theta = -pi + 0.09; theta < pi - 0.09; theta += 0.001)
-      {
-        angles.push_back(theta);
-        const geometry::Point x = tip.position + r * (std::cos(theta) * d + std::sin(theta) * n);
-        for (const geometry::Point step : {geometry::Point{e, 0.}, geometry::Point{-e, 0.}, geometry::Point{0., e},
-                                           geometry::Point{0., -e}})
-          points.push_back(x + step);
-      }
-    const auto u    = global.displacement_per_unit_load(points);
-    double     best = -std::numeric_limits<double>::infinity(), at = 0.;
-    for (std::size_t k = 0; k < angles.size(); ++k)
-      {
-        const double ux_x = (u[4 * k].x - u[4 * k + 1].x) / (2. * e), uy_x = (u[4 * k].y - u[4 * k + 1].y) / (2. * e);
-        const double ux_y = (u[4 * k + 2].x - u[4 * k + 3].x) / (2. * e), uy_y = (u[4 * k + 2].y - u[4 * k + 3].y) / (2. * e);
-        const double sxx = lambda * (ux_x + uy_y) + 2. * mu * ux_x, syy = lambda * (ux_x + uy_y) + 2. * mu * uy_y;
-        const double sxy = mu * (ux_y + uy_x);
-        const double phi = angles[k] + std::atan2(d.y, d.x), c = std::cos(phi), s = std::sin(phi);
-        const double hoop = sxx * s * s + syy * c * c - 2. * sxy * s * c;
-        if (hoop > best)
-          best = hoop, at = angles[k];
-      }
-    return at;
-  }
 } // namespace
 
 TEST(SingleEdgeNotchShear, FirstKinkAgainstMaximumHoopStress)
@@ -114,7 +77,7 @@ TEST(SingleEdgeNotchShear, FirstKinkAgainstMaximumHoopStress)
   const global::Crack     crack(scene.crack(), scene.body, 1e-8 * scene.body.bounding_box().width());
   coupling::GlobalProblem global(scene, q.global);
   const auto              tip         = global.solve(crack).front();
-  const double            field       = largest_hoop_stress(global, tip, scene.material, reach);
+  const double            field       = global.hoop_direction(tip, reach);
   const double            field_error = std::abs(test::degrees(gl_kink - field));
 
   std::cout << "LEFM: K_II / K_I " << first.k2 / first.k1 << ", theta_c " << test::degrees(lefm_mts)
@@ -183,7 +146,7 @@ TEST(SingleEdgeNotchShearStudy, DISABLED_KinkAgainstHorizon)
       coupling::GlobalProblem global(scene, p.global);
       const auto              tip  = global.solve(crack).front();
       const double            r    = geometry::norm(gl.path.back() - scene.crack().back());
-      const double            hoop = largest_hoop_stress(global, tip, scene.material, r);
+      const double            hoop = global.hoop_direction(tip, r);
       std::cout << "delta " << delta << " m: theta_c " << test::degrees(mts) << " deg, first PD increment "
                 << test::degrees(kink) << " deg, the plate's largest hoop stress at " << r << " m "
                 << test::degrees(hoop) << " deg\n";
