@@ -38,7 +38,9 @@ namespace pumpd::coupling
                       "eps [deg]: a tip that has not grown gets a box whose horizon is at most eps a / |theta_c| "
                       "(eps in radians, theta_c the maximum hoop stress angle, a the crack's length, half of it for "
                       "an interior crack): the first PD increment, a straight segment of 1.5 to 2 horizons, then "
-                      "lies within about eps of the kinked path's direction. 0: no such halving.",
+                      "lies within about eps of the kinked path's direction; and halved further until the global "
+                      "field's largest hoop stress 1.5 horizons from the tip lies within eps of theta_c. 0: no "
+                      "such halving.",
                       dealii::Patterns::Double(0., 30.));
     prm.add_parameter("Maximum kink halvings", max_kink_halvings,
                       "The horizon a kink asks for is at least the section Peridynamics' horizon / 2^this.",
@@ -80,11 +82,20 @@ namespace pumpd::coupling
     return int(s.max_halvings);
   }
 
+  namespace
+  {
+    /// eps [rad]; 0 under the fixed rule, where no kink halving applies.
+    double kink_tolerance_of(const ResolutionSettings &s)
+    {
+      return s.rule == "clearance" ? s.kink_tolerance * std::acos(-1.) / 180. : 0.;
+    }
+  } // namespace
+
   int kink_halvings(const ResolutionSettings &s, double horizon, double kink, double crack_length)
   {
-    const double tolerance = s.kink_tolerance * std::acos(-1.) / 180.;
+    const double tolerance = kink_tolerance_of(s);
     const double error     = horizon * std::abs(kink) / crack_length;
-    if (s.rule != "clearance" || tolerance <= 0. || !(crack_length > 0.) || error <= tolerance)
+    if (tolerance <= 0. || !(crack_length > 0.) || error <= tolerance)
       return 0;
     const double needed = std::ceil(std::log2(error / tolerance) - 1e-12);
     return int(std::clamp(needed, 0., double(s.max_kink_halvings)));
@@ -93,8 +104,8 @@ namespace pumpd::coupling
   int field_kink_halvings(const ResolutionSettings &s, double horizon, double kink,
                           const std::function<double(double)> &hoop_direction)
   {
-    const double tolerance = s.kink_tolerance * std::acos(-1.) / 180.;
-    if (s.rule != "clearance" || tolerance <= 0. || std::abs(kink) <= tolerance)
+    const double tolerance = kink_tolerance_of(s);
+    if (tolerance <= 0. || std::abs(kink) <= tolerance)
       return 0;
     for (int k = 0; k < int(s.max_kink_halvings); ++k)
       if (std::abs(hoop_direction(1.5 * std::ldexp(horizon, -k)) - kink) <= tolerance)
